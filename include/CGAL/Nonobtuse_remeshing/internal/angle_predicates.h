@@ -1,0 +1,238 @@
+// Filtered exact predicates deciding whether the angles of a triangle lie in
+// [min, max], from the double coordinates as stored.
+//
+// At a corner with edge vectors u and v, let d = u.v and L = |u|^2 |v|^2. Then
+// cos(angle) = d / sqrt(L), and with a bound written as cos = s * sqrt(q)
+// (s the sign of the cosine, q its square):
+//   angle <= max  <=>  cos >= s*sqrt(q)  <=>  s >= 0 ? (d >= 0 and d^2 >= q L)
+//                                                   : (d >= 0 or  d^2 <= q L)
+//   angle >= min  <=>  cos <= s*sqrt(q)  <=>  s >  0 ? (d <= 0 or  d^2 <= q L)
+//                                                   : (d <= 0 and d^2 >= q L)
+// For 90 degrees (s = 0, q = 0) the test is d >= 0; for 30 degrees (q = 3/4)
+// it is d <= 0 or 4 d^2 <= 3 L (thesis, chapter 3: the well-shaped nonobtuse
+// bound). Everything is a polynomial in the coordinates, so interval
+// arithmetic decides almost always, and an exact rational decides the rest.
+
+#ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_ANGLE_PREDICATES_H
+#define CGAL_NONOBTUSE_REMESHING_INTERNAL_ANGLE_PREDICATES_H
+
+#include <CGAL/Interval_nt.h>
+#include <CGAL/Uncertain.h>
+#include <CGAL/number_type_config.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/FPU.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+namespace Nonobtuse_remeshing {
+namespace internal {
+
+// A cosine value c = sign * sqrt(factor_a * factor_b), held exactly: the two
+// factors are doubles whose product is taken in exact arithmetic.
+struct Cosine_bound
+{
+  int sign = 0;
+  double factor_a = 0.;
+  double factor_b = 0.;
+  bool exact = true;  // true when the bound is the requested angle itself
+};
+
+// Angles whose cosine has a rational square: their bound is tested exactly.
+inline bool exact_cosine_bound(double degrees, Cosine_bound& bound)
+{
+  struct Entry { double degrees; int sign; double square; };
+  static const Entry table[] = {
+    {0., 1, 1.},     {30., 1, 0.75},  {45., 1, 0.5},   {60., 1, 0.25},
+    {90., 0, 0.},    {120., -1, 0.25}, {135., -1, 0.5}, {150., -1, 0.75},
+    {180., -1, 1.}};
+  for(const Entry& e : table)
+    if(e.degrees == degrees) {
+      bound.sign = e.sign;
+      bound.factor_a = e.square;
+      bound.factor_b = 1.;
+      bound.exact = true;
+      return true;
+    }
+  return false;
+}
+
+// Conservative rounding for other bounds: the double cosine of the bound is
+// within 2e-15 of the true value, so moving it by 1e-12 in the safe direction
+// proves a bound never looser than the one requested (tighter by less than
+// 1e-12 / sin(bound) radians).
+constexpr double cosine_safety_margin = 1e-12;
+
+inline Cosine_bound cosine_bound(double degrees, bool is_lower_bound)
+{
+  Cosine_bound bound;
+  if(exact_cosine_bound(degrees, bound))
+    return bound;
+  const double pi = 3.141592653589793238462643383279502884;
+  double c = std::cos(degrees / 180. * pi);
+  // A lower angle bound needs cos(angle) <= c: shrink c. An upper one, grow it.
+  c += is_lower_bound ? -cosine_safety_margin : cosine_safety_margin;
+  c = (std::min)(1., (std::max)(-1., c));
+  bound.sign = (c > 0) ? 1 : ((c < 0) ? -1 : 0);
+  bound.factor_a = std::abs(c);
+  bound.factor_b = std::abs(c);
+  bound.exact = false;
+  return bound;
+}
+
+/// The requested angle interval, in degrees, and the exact cosine bounds that
+/// certify it.
+class Angle_bounds
+{
+public:
+  Angle_bounds(double min_degrees = 30., double max_degrees = 90.)
+    : min_degrees_(min_degrees), max_degrees_(max_degrees)
+  {
+    if(!(min_degrees >= 0. && max_degrees <= 180. && min_degrees <= max_degrees))
+      throw std::invalid_argument("angle bounds must satisfy 0 <= min <= max <= 180, got [" +
+                                  std::to_string(min_degrees) + ", " +
+                                  std::to_string(max_degrees) + "]");
+    lower_ = cosine_bound(min_degrees, true);
+    upper_ = cosine_bound(max_degrees, false);
+  }
+
+  double min_degrees() const { return min_degrees_; }
+  double max_degrees() const { return max_degrees_; }
+  const Cosine_bound& lower() const { return lower_; }
+  const Cosine_bound& upper() const { return upper_; }
+  bool is_exact() const { return lower_.exact && upper_.exact; }
+
+private:
+  double min_degrees_, max_degrees_;
+  Cosine_bound lower_, upper_;
+};
+
+/// Verdict on one corner.
+struct Corner_verdict
+{
+  bool too_small = false;
+  bool too_large = false;
+};
+
+// Evaluates the two tests above with the number type NT. With Interval_nt the
+// comparisons are Uncertain<bool>, and converting an undecided one to bool
+// throws Uncertain_conversion_exception: the caller then retries exactly.
+template <typename NT>
+Corner_verdict corner_verdict(const double* apex, const double* p, const double* q,
+                              const Angle_bounds& bounds)
+{
+  const NT ux = NT(p[0]) - NT(apex[0]), uy = NT(p[1]) - NT(apex[1]), uz = NT(p[2]) - NT(apex[2]);
+  const NT vx = NT(q[0]) - NT(apex[0]), vy = NT(q[1]) - NT(apex[1]), vz = NT(q[2]) - NT(apex[2]);
+  const NT d = ux * vx + uy * vy + uz * vz;
+  const NT l = (ux * ux + uy * uy + uz * uz) * (vx * vx + vy * vy + vz * vz);
+  const NT d2 = d * d;
+
+  Corner_verdict verdict;
+  const Cosine_bound& up = bounds.upper();
+  const NT q_up = NT(up.factor_a) * NT(up.factor_b) * l;
+  bool within_max;
+  if(up.sign >= 0)
+    within_max = bool(d >= 0) && bool(d2 >= q_up);
+  else
+    within_max = bool(d >= 0) || bool(d2 <= q_up);
+  verdict.too_large = !within_max;
+
+  const Cosine_bound& lo = bounds.lower();
+  const NT q_lo = NT(lo.factor_a) * NT(lo.factor_b) * l;
+  bool within_min;
+  if(lo.sign > 0)
+    within_min = bool(d <= 0) || bool(d2 <= q_lo);
+  else
+    within_min = bool(d <= 0) && bool(d2 >= q_lo);
+  verdict.too_small = !within_min;
+  return verdict;
+}
+
+// Degeneracy of a triangle, decided exactly: a zero-length edge, or three
+// collinear points (zero area). Collinearity is the vanishing of the cross
+// product of two edge vectors.
+template <typename NT>
+bool is_degenerate_triangle(const double* a, const double* b, const double* c)
+{
+  const NT ux = NT(b[0]) - NT(a[0]), uy = NT(b[1]) - NT(a[1]), uz = NT(b[2]) - NT(a[2]);
+  const NT vx = NT(c[0]) - NT(a[0]), vy = NT(c[1]) - NT(a[1]), vz = NT(c[2]) - NT(a[2]);
+  const NT cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
+  return bool(cx == 0) && bool(cy == 0) && bool(cz == 0);
+}
+
+/// Verdict on one triangle, exact: interval arithmetic first, exact rationals
+/// when intervals cannot decide.
+struct Triangle_verdict
+{
+  bool degenerate = false;
+  std::array<Corner_verdict, 3> corners;  // corner i is at vertex i
+
+  bool within_bounds() const
+  {
+    if(degenerate) return false;
+    for(const Corner_verdict& c : corners)
+      if(c.too_small || c.too_large) return false;
+    return true;
+  }
+};
+
+template <typename NT>
+Triangle_verdict triangle_verdict_with(const std::array<const double*, 3>& t,
+                                       const Angle_bounds& bounds)
+{
+  Triangle_verdict verdict;
+  verdict.degenerate = is_degenerate_triangle<NT>(t[0], t[1], t[2]);
+  if(verdict.degenerate)
+    return verdict;
+  for(int i = 0; i < 3; ++i)
+    verdict.corners[i] = corner_verdict<NT>(t[i], t[(i + 1) % 3], t[(i + 2) % 3], bounds);
+  return verdict;
+}
+
+inline Triangle_verdict triangle_verdict(const std::array<const double*, 3>& t,
+                                         const Angle_bounds& bounds)
+{
+  {
+    Protect_FPU_rounding<true> protection;
+    try {
+      return triangle_verdict_with<Interval_nt_advanced>(t, bounds);
+    } catch(Uncertain_conversion_exception&) {}
+  }
+  Protect_FPU_rounding<false> protection(CGAL_FE_TONEAREST);
+  return triangle_verdict_with<Exact_rational>(t, bounds);
+}
+
+template <typename Point>
+Triangle_verdict triangle_verdict(const Point& a, const Point& b, const Point& c,
+                                  const Angle_bounds& bounds)
+{
+  const double pa[3] = {to_double(a.x()), to_double(a.y()), to_double(a.z())};
+  const double pb[3] = {to_double(b.x()), to_double(b.y()), to_double(b.z())};
+  const double pc[3] = {to_double(c.x()), to_double(c.y()), to_double(c.z())};
+  return triangle_verdict({pa, pb, pc}, bounds);
+}
+
+/// Approximate angle in degrees at `apex`, for reports only (the verdicts
+/// above are exact). atan2 of |u x v| and u.v keeps small and large angles
+/// accurate; dividing by pi before scaling keeps exact right angles at 90.
+template <typename Point>
+double corner_angle_degrees(const Point& apex, const Point& p, const Point& q)
+{
+  const double ux = to_double(p.x()) - to_double(apex.x()), uy = to_double(p.y()) - to_double(apex.y()),
+               uz = to_double(p.z()) - to_double(apex.z());
+  const double vx = to_double(q.x()) - to_double(apex.x()), vy = to_double(q.y()) - to_double(apex.y()),
+               vz = to_double(q.z()) - to_double(apex.z());
+  const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
+  const double pi = 3.141592653589793238462643383279502884;
+  return std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), ux * vx + uy * vy + uz * vz) / pi * 180.;
+}
+
+} // namespace internal
+} // namespace Nonobtuse_remeshing
+} // namespace CGAL
+
+#endif // CGAL_NONOBTUSE_REMESHING_INTERNAL_ANGLE_PREDICATES_H

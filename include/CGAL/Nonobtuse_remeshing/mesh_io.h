@@ -1,0 +1,278 @@
+// Checked reading and atomic, full-precision writing of triangle meshes.
+//
+// Reading goes through a polygon soup so that nothing is repaired silently:
+// the soup is checked, repaired only when it is not a valid polygon mesh, and
+// every repair is reported. Writing goes to a temporary file in the target's
+// folder, with max_digits10 digits (or binary PLY), and is renamed over the
+// target only once complete, so the file holds exactly the doubles in memory.
+
+#ifndef CGAL_NONOBTUSE_REMESHING_MESH_IO_H
+#define CGAL_NONOBTUSE_REMESHING_MESH_IO_H
+
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace CGAL {
+namespace Nonobtuse_remeshing {
+
+/// Thrown when an input file cannot be turned into a triangle mesh; the
+/// message is one line naming the problem.
+struct Bad_input : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+/// Thrown when an output file cannot be written.
+struct Output_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+/// What `read_triangle_mesh()` had to do to the file's contents, one line each.
+struct Read_log
+{
+  std::vector<std::string> repairs;
+};
+
+namespace internal {
+
+inline std::string file_extension(const std::string& path)
+{
+  const std::size_t slash = path.find_last_of('/');
+  const std::size_t dot = path.find_last_of('.');
+  if(dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return std::string();
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+inline bool is_mesh_extension(const std::string& ext)
+{
+  return ext == "off" || ext == "obj" || ext == "ply" || ext == "stl";
+}
+
+// True when the text of the file holds a "nan" or "inf" token: text readers
+// stop there, and the user should hear the real reason.
+inline bool has_non_finite_token(const std::string& path)
+{
+  std::ifstream in(path);
+  std::string token;
+  while(in >> token) {
+    std::transform(token.begin(), token.end(), token.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    const std::size_t start = (token[0] == '-' || token[0] == '+') ? 1 : 0;
+    if(token.compare(start, 3, "nan") == 0 || token.compare(start, 3, "inf") == 0)
+      return true;
+  }
+  return false;
+}
+
+template <typename Point>
+void read_soup(const std::string& path, std::vector<Point>& points,
+               std::vector<std::vector<std::size_t> >& polygons)
+{
+  const std::string ext = file_extension(path);
+  if(!is_mesh_extension(ext))
+    throw Bad_input("unsupported file format '" + path + "' (expected .off, .obj, .ply or .stl)");
+  {
+    std::ifstream probe(path, std::ios::binary);
+    if(!probe)
+      throw Bad_input("cannot open '" + path + "'");
+    if(probe.peek() == std::ifstream::traits_type::eof())
+      throw Bad_input("'" + path + "' is empty");
+  }
+  bool ok = false;
+  try {
+    if(ext == "off") ok = CGAL::IO::read_OFF(path, points, polygons);
+    else if(ext == "obj") ok = CGAL::IO::read_OBJ(path, points, polygons);
+    else if(ext == "ply") ok = CGAL::IO::read_PLY(path, points, polygons);
+    else ok = CGAL::IO::read_STL(path, points, polygons);
+  } catch(const std::exception&) {
+    ok = false;
+  }
+  if(!ok) {
+    if(ext != "ply" && has_non_finite_token(path))
+      throw Bad_input("'" + path + "' has a non-finite (nan or inf) coordinate");
+    throw Bad_input("cannot parse '" + path + "' as " + ext + ": unreadable or malformed file");
+  }
+}
+
+// Checks the soup read from `path`; drops faces that repeat a vertex, and
+// repairs a soup that is not a valid polygon mesh, logging each repair.
+template <typename Point>
+void check_and_repair_soup(const std::string& path, std::vector<Point>& points,
+                           std::vector<std::vector<std::size_t> >& polygons, Read_log& log)
+{
+  if(polygons.empty())
+    throw Bad_input("'" + path + "' holds no face (empty mesh)");
+  for(std::size_t i = 0; i < points.size(); ++i)
+    for(int k = 0; k < 3; ++k)
+      if(!std::isfinite(CGAL::to_double(points[i][k])))
+        throw Bad_input("'" + path + "': vertex " + std::to_string(i) +
+                        " has a non-finite (nan or inf) coordinate");
+  std::size_t repeated = 0;
+  for(std::size_t f = 0; f < polygons.size(); ++f) {
+    const std::vector<std::size_t>& polygon = polygons[f];
+    if(polygon.size() < 3)
+      throw Bad_input("'" + path + "': face " + std::to_string(f) + " has fewer than 3 vertices");
+    for(std::size_t v : polygon)
+      if(v >= points.size())
+        throw Bad_input("'" + path + "': face " + std::to_string(f) + " refers to vertex " +
+                        std::to_string(v) + " but there are only " + std::to_string(points.size()));
+  }
+  polygons.erase(std::remove_if(polygons.begin(), polygons.end(),
+                                [&](const std::vector<std::size_t>& polygon) {
+                                  const std::set<std::size_t> distinct(polygon.begin(), polygon.end());
+                                  const bool bad = distinct.size() != polygon.size();
+                                  repeated += bad;
+                                  return bad;
+                                }),
+                 polygons.end());
+  if(repeated > 0)
+    log.repairs.push_back("removed " + std::to_string(repeated) +
+                          " face(s) that repeat a vertex");
+  if(polygons.empty())
+    throw Bad_input("'" + path + "' holds no valid face (empty mesh)");
+
+  if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons)) {
+    const std::size_t before = points.size();
+    Polygon_mesh_processing::orient_polygon_soup(points, polygons);
+    if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
+      throw Bad_input("'" + path + "' is not a valid polygon mesh and could not be repaired");
+    log.repairs.push_back("not a valid polygon mesh (non-manifold or inconsistently oriented): "
+                          "repaired with orient_polygon_soup, " +
+                          std::to_string(points.size() - before) + " vertex(es) duplicated");
+  }
+}
+
+} // namespace internal
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Reads an OFF, OBJ, PLY or STL file into the triangle mesh `mesh` (cleared
+/// first). Throws `Bad_input` with a one-line message when the file is
+/// missing, unreadable, empty, has non-finite coordinates, bad face indices,
+/// or is a polygon soup that cannot be made a polygon mesh. Non-triangle faces
+/// are triangulated and invalid soups repaired; `log` says what was done.
+template <typename PolygonMesh>
+void read_triangle_mesh(const std::string& path, PolygonMesh& mesh, Read_log& log)
+{
+  using Point = typename boost::property_traits<
+      typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>::value_type;
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  internal::read_soup(path, points, polygons);
+  internal::check_and_repair_soup(path, points, polygons, log);
+
+  std::vector<bool> used(points.size(), false);
+  for(const auto& polygon : polygons)
+    for(std::size_t v : polygon) used[v] = true;
+  const std::size_t unused = std::count(used.begin(), used.end(), false);
+  if(unused > 0)
+    log.repairs.push_back("ignored " + std::to_string(unused) + " vertex(es) used by no face");
+
+  clear(mesh);
+  Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  if(!is_triangle_mesh(mesh)) {
+    std::size_t polygons_to_split = 0;
+    for(const auto& polygon : polygons) polygons_to_split += (polygon.size() > 3);
+    if(!Polygon_mesh_processing::triangulate_faces(mesh))
+      throw Bad_input("'" + path + "': a non-triangle face could not be triangulated");
+    log.repairs.push_back("triangulated " + std::to_string(polygons_to_split) +
+                          " non-triangle face(s)");
+  }
+}
+
+template <typename PolygonMesh>
+void read_triangle_mesh(const std::string& path, PolygonMesh& mesh)
+{
+  Read_log log;
+  read_triangle_mesh(path, mesh, log);
+}
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Writes `path` atomically: `write_contents(temporary_path)` fills a
+/// temporary file in the same folder (its name ends with the same extension),
+/// `check(temporary_path)`, if given, may reject it by returning false, and
+/// only then is it renamed over `path`. On any failure the temporary file is
+/// removed, `path` is left untouched and `Output_error` is thrown.
+inline void write_file_atomically(const std::string& path,
+                                  const std::function<bool(const std::string&)>& write_contents,
+                                  const std::function<bool(const std::string&)>& check = nullptr)
+{
+  static std::atomic<unsigned> counter{0};
+  const std::size_t slash = path.find_last_of('/');
+  const std::string folder = (slash == std::string::npos) ? std::string() : path.substr(0, slash + 1);
+  const std::string name = (slash == std::string::npos) ? path : path.substr(slash + 1);
+  if(name.empty())
+    throw Output_error("cannot write '" + path + "': not a file name");
+  const std::string ext = internal::file_extension(name);
+  const std::string temporary = folder + "." + name + ".tmp-" + std::to_string(::getpid()) + "-" +
+                                std::to_string(counter++) + (ext.empty() ? "" : "." + ext);
+  bool written = false;
+  try {
+    written = write_contents(temporary);
+  } catch(const std::exception&) {
+    written = false;
+  }
+  if(!written) {
+    std::remove(temporary.c_str());
+    throw Output_error("cannot write '" + path + "' (folder missing or not writable?)");
+  }
+  if(check && !check(temporary)) {
+    std::remove(temporary.c_str());
+    throw Output_error("refused to write '" + path + "': the written file failed its check");
+  }
+  if(std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw Output_error("cannot write '" + path + "': rename failed");
+  }
+}
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Writes the triangle mesh `mesh` to `path` (format by extension: OFF, OBJ,
+/// ASCII STL with max_digits10 digits, or binary PLY with doubles), atomically
+/// as `write_file_atomically()`. `check`, if given, sees the temporary file
+/// before the rename and may reject it.
+template <typename PolygonMesh>
+void write_mesh_atomically(const std::string& path, const PolygonMesh& mesh,
+                           const std::function<bool(const std::string&)>& check = nullptr)
+{
+  const std::string ext = internal::file_extension(path);
+  if(!internal::is_mesh_extension(ext))
+    throw Output_error("cannot write '" + path + "': unsupported extension (expected .off, .obj, .ply or .stl)");
+  write_file_atomically(
+      path,
+      [&](const std::string& temporary) {
+        return CGAL::IO::write_polygon_mesh(
+            temporary, mesh,
+            CGAL::parameters::stream_precision(std::numeric_limits<double>::max_digits10)
+                .use_binary_mode(ext == "ply"));
+      },
+      check);
+}
+
+} // namespace Nonobtuse_remeshing
+} // namespace CGAL
+
+#endif // CGAL_NONOBTUSE_REMESHING_MESH_IO_H

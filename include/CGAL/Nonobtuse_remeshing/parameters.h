@@ -1,0 +1,88 @@
+// Named parameters of the Nonobtuse_remeshing package.
+//
+// CGAL 5.5's Named_function_parameters accepts any type as a tag, so the package
+// defines its own tags here, a `parameters` namespace of free functions that
+// create them, and `combine()` to chain them with CGAL's own named parameters
+// (CGAL 5.5 has no member for that; CGAL functions ignore tags they do not know).
+//
+//   namespace NR = CGAL::Nonobtuse_remeshing;
+//   NR::certify_angle_bounds(mesh, NR::parameters::combine(
+//       NR::parameters::min_angle(35.), CGAL::parameters::vertex_point_map(vpm)));
+
+#ifndef CGAL_NONOBTUSE_REMESHING_PARAMETERS_H
+#define CGAL_NONOBTUSE_REMESHING_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace Nonobtuse_remeshing {
+namespace internal_np {
+
+#define CGAL_NONOBTUSE_TAGS(X)                                                  \
+  X(min_angle_t, min_angle)               /* lower angle bound, degrees */      \
+  X(max_angle_t, max_angle)               /* upper angle bound, degrees */      \
+  X(hausdorff_relative_error_t,                                                 \
+    hausdorff_relative_error)             /* Hausdorff error, fraction of diag*/\
+  X(maximum_self_intersections_t,                                               \
+    maximum_self_intersections)           /* cap on reported face pairs */
+
+#define CGAL_NONOBTUSE_DECLARE_TAG(TAG, NAME) enum TAG { NAME };
+CGAL_NONOBTUSE_TAGS(CGAL_NONOBTUSE_DECLARE_TAG)
+#undef CGAL_NONOBTUSE_DECLARE_TAG
+
+} // namespace internal_np
+
+namespace parameters {
+
+using CGAL::parameters::choose_parameter;
+using CGAL::parameters::get_parameter;
+using CGAL::parameters::default_values;
+
+#define CGAL_NONOBTUSE_DECLARE_FUNCTION(TAG, NAME)                              \
+  template <typename T>                                                         \
+  Named_function_parameters<T, internal_np::TAG> NAME(const T& value)           \
+  {                                                                             \
+    return Named_function_parameters<T, internal_np::TAG>(value);               \
+  }
+CGAL_NONOBTUSE_TAGS(CGAL_NONOBTUSE_DECLARE_FUNCTION)
+#undef CGAL_NONOBTUSE_DECLARE_FUNCTION
+
+namespace internal {
+
+// Rebuilds the chain `np` on top of `base`: the result holds every parameter of
+// both, those of `np` looked up first.
+template <typename Base, typename T, typename Tag>
+Named_function_parameters<T, Tag, Base>
+append(const Base& base, const Named_function_parameters<T, Tag>& np)
+{
+  return Named_function_parameters<T, Tag, Base>(np.v, base);
+}
+
+template <typename Base, typename T, typename Tag, typename NpBase>
+auto append(const Base& base, const Named_function_parameters<T, Tag, NpBase>& np)
+{
+  const NpBase& rest = np;
+  auto chained = internal::append(base, rest);
+  return Named_function_parameters<T, Tag, decltype(chained)>(np.v, chained);
+}
+
+} // namespace internal
+
+/// Combines named-parameter chains, this package's and CGAL's, into one.
+/// When a tag appears twice, the value from the later argument wins.
+template <typename NP>
+const NP& combine(const NP& np) { return np; }
+
+template <typename NP1, typename NP2, typename... NPs>
+auto combine(const NP1& np1, const NP2& np2, const NPs&... nps)
+{
+  return combine(internal::append(np1, np2), nps...);
+}
+
+} // namespace parameters
+} // namespace Nonobtuse_remeshing
+} // namespace CGAL
+
+#undef CGAL_NONOBTUSE_TAGS
+
+#endif // CGAL_NONOBTUSE_REMESHING_PARAMETERS_H

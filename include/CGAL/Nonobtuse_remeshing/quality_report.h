@@ -1,0 +1,257 @@
+// Quality report of a triangle mesh: angles (certified exactly), valences,
+// topology, defects, and the distance to a reference mesh.
+
+#ifndef CGAL_NONOBTUSE_REMESHING_QUALITY_REPORT_H
+#define CGAL_NONOBTUSE_REMESHING_QUALITY_REPORT_H
+
+#include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
+#include <CGAL/Nonobtuse_remeshing/internal/angle_predicates.h>
+#include <CGAL/Nonobtuse_remeshing/parameters.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/property_map.h>
+
+#include <boost/optional.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Nonobtuse_remeshing {
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Distances between a mesh and a reference, in percent of the reference's
+/// bounding-box diagonal.
+struct Distance_report
+{
+  double reference_diagonal = 0.;
+  /// one-sided Hausdorff distance from the mesh to the reference
+  double hausdorff_to_reference = 0.;
+  /// one-sided Hausdorff distance from the reference to the mesh
+  double hausdorff_from_reference = 0.;
+  /// max of the two
+  double hausdorff_symmetric = 0.;
+  /// each Hausdorff value is within this of the true distance
+  /// (CGAL's bounded-error Hausdorff distance)
+  double hausdorff_error_bound = 0.;
+  /// area-weighted mean distance from the mesh to the reference, and back
+  double mean_to_reference = 0.;
+  double mean_from_reference = 0.;
+};
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Result of `quality_report()`.
+struct Quality_report
+{
+  std::size_t vertices = 0, edges = 0, faces = 0;
+  /// exact certification summary (see `certify_angle_bounds()`)
+  double min_bound = 30., max_bound = 90.;
+  bool bounds_exact = true;
+  bool certified = false;
+  std::size_t too_small_corners = 0, too_large_corners = 0, degenerate_faces = 0;
+  std::size_t offending_faces = 0;
+  double min_angle = 0., max_angle = 0.;
+  /// corner angles in 5 degree bins: bin i counts [5i, 5i+5), the last one
+  /// also holds 180
+  std::array<std::size_t, 36> angle_histogram{};
+  /// valence (number of incident edges) to number of vertices
+  std::map<std::size_t, std::size_t> interior_valences, boundary_valences;
+  std::size_t border_cycles = 0;
+  std::size_t connected_components = 0;
+  long euler_characteristic = 0;
+  std::size_t non_manifold_vertices = 0;
+  /// self-intersecting face pairs, counted up to `self_intersections_cap`
+  std::size_t self_intersections = 0;
+  std::size_t self_intersections_cap = 0;
+  bool self_intersections_capped = false;
+  double bbox_diagonal = 0.;
+  boost::optional<Distance_report> distance;
+};
+
+namespace internal {
+
+// Area-weighted mean distance from `mesh` to the triangles in `tree`: each
+// face is integrated with the degree-3 rule that weighs the vertices 1/20,
+// the edge midpoints 2/15 and the centroid 9/20.
+template <typename TriangleMesh, typename Tree>
+double mean_distance(const TriangleMesh& mesh, const Tree& tree)
+{
+  using Point = typename boost::property_traits<
+      typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type;
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  double integral = 0., area = 0.;
+  for(auto f : faces(mesh)) {
+    const auto h = halfedge(f, mesh);
+    const Point& a = get(vpm, source(h, mesh));
+    const Point& b = get(vpm, target(h, mesh));
+    const Point& c = get(vpm, target(next(h, mesh), mesh));
+    const double fa = std::sqrt(to_double(CGAL::squared_area(a, b, c)));
+    auto d = [&](const Point& p) { return std::sqrt(to_double(tree.squared_distance(p))); };
+    const double corners = d(a) + d(b) + d(c);
+    const double midpoints = d(CGAL::midpoint(a, b)) + d(CGAL::midpoint(b, c)) + d(CGAL::midpoint(c, a));
+    const double mean = corners / 20. + midpoints * 2. / 15. + d(CGAL::centroid(a, b, c)) * 9. / 20.;
+    integral += fa * mean;
+    area += fa;
+  }
+  return area > 0. ? integral / area : 0.;
+}
+
+template <typename TriangleMesh>
+double bbox_diagonal(const TriangleMesh& mesh)
+{
+  const Bbox_3 box = Polygon_mesh_processing::bbox(mesh);
+  const double dx = box.xmax() - box.xmin(), dy = box.ymax() - box.ymin(), dz = box.zmax() - box.zmin();
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+template <typename TriangleMesh>
+Distance_report distance_report(const TriangleMesh& mesh, const TriangleMesh& reference,
+                                double relative_error)
+{
+  namespace PMP = Polygon_mesh_processing;
+  using Primitive = AABB_face_graph_triangle_primitive<TriangleMesh>;
+  using Traits = AABB_traits<typename Kernel_traits<typename boost::property_traits<
+      typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type>::Kernel,
+      Primitive>;
+
+  Distance_report r;
+  r.reference_diagonal = bbox_diagonal(reference);
+  const double scale = r.reference_diagonal > 0. ? 100. / r.reference_diagonal : 0.;
+  const double error = relative_error * r.reference_diagonal;
+  r.hausdorff_to_reference =
+      scale * PMP::bounded_error_Hausdorff_distance<Sequential_tag>(mesh, reference, error);
+  r.hausdorff_from_reference =
+      scale * PMP::bounded_error_Hausdorff_distance<Sequential_tag>(reference, mesh, error);
+  r.hausdorff_symmetric = (std::max)(r.hausdorff_to_reference, r.hausdorff_from_reference);
+  r.hausdorff_error_bound = scale * error;
+
+  AABB_tree<Traits> to_reference(faces(reference).first, faces(reference).second, reference);
+  to_reference.accelerate_distance_queries();
+  r.mean_to_reference = scale * mean_distance(mesh, to_reference);
+  AABB_tree<Traits> to_mesh(faces(mesh).first, faces(mesh).second, mesh);
+  to_mesh.accelerate_distance_queries();
+  r.mean_from_reference = scale * mean_distance(reference, to_mesh);
+  return r;
+}
+
+// Keeps the reference's type out of template deduction, so that a null
+// reference can be passed as `nullptr`.
+template <typename T> struct Same { using type = T; };
+
+// Output iterator that only counts the face pairs it is given.
+struct Counting_iterator
+{
+  std::size_t* count;
+  Counting_iterator& operator*() { return *this; }
+  Counting_iterator& operator++() { return *this; }
+  Counting_iterator operator++(int) { return *this; }
+  template <typename T> Counting_iterator& operator=(const T&) { ++*count; return *this; }
+};
+
+} // namespace internal
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Computes the quality report of the triangle mesh `mesh` (a
+/// `CGAL::Surface_mesh` or any model of `FaceListGraph`). If `reference` is
+/// not null, the distances to it are computed too.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{min_angle, max_angle} the bounds to certify (default 30, 90) \cgalParamNEnd
+///   \cgalParamNBegin{maximum_self_intersections} cap on the counted self-intersecting
+///     face pairs (default 1000) \cgalParamNEnd
+///   \cgalParamNBegin{hausdorff_relative_error} error bound of the Hausdorff distances,
+///     as a fraction of the reference's bounding-box diagonal (default 1e-4) \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Quality_report quality_report(const TriangleMesh& mesh,
+                              const typename internal::Same<TriangleMesh>::type* reference = nullptr,
+                              const NamedParameters& np = CGAL::parameters::default_values())
+{
+  namespace PMP = Polygon_mesh_processing;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+
+  Quality_report r;
+  r.vertices = num_vertices(mesh);
+  r.edges = num_edges(mesh);
+  r.faces = num_faces(mesh);
+  r.euler_characteristic = long(r.vertices) - long(r.edges) + long(r.faces);
+
+  const auto certificate = certify_angle_bounds(mesh, np);
+  r.min_bound = certificate.min_bound;
+  r.max_bound = certificate.max_bound;
+  r.bounds_exact = certificate.bounds_exact;
+  r.certified = certificate.is_certified();
+  r.too_small_corners = certificate.too_small_corners;
+  r.too_large_corners = certificate.too_large_corners;
+  r.degenerate_faces = certificate.degenerate_faces;
+  r.offending_faces = certificate.offending_faces.size();
+  r.min_angle = certificate.min_angle;
+  r.max_angle = certificate.max_angle;
+
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  for(face_descriptor f : faces(mesh)) {
+    const halfedge_descriptor h = halfedge(f, mesh);
+    const auto& a = get(vpm, source(h, mesh));
+    const auto& b = get(vpm, target(h, mesh));
+    const auto& c = get(vpm, target(next(h, mesh), mesh));
+    const decltype(&a) pts[3] = {&a, &b, &c};
+    for(int i = 0; i < 3; ++i) {
+      const double angle = internal::corner_angle_degrees(*pts[i], *pts[(i + 1) % 3], *pts[(i + 2) % 3]);
+      if(std::isfinite(angle))
+        ++r.angle_histogram[(std::min)(35, int(angle / 5.))];
+    }
+  }
+
+  for(auto v : vertices(mesh)) {
+    if(PMP::is_non_manifold_vertex(v, mesh)) ++r.non_manifold_vertices;
+    const std::size_t valence = degree(v, mesh);
+    if(is_border(v, mesh)) ++r.boundary_valences[valence];
+    else ++r.interior_valences[valence];
+  }
+
+  std::vector<halfedge_descriptor> cycles;
+  PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+  r.border_cycles = cycles.size();
+
+  std::unordered_map<face_descriptor, std::size_t> component;
+  r.connected_components =
+      PMP::connected_components(mesh, boost::make_assoc_property_map(component));
+
+  r.self_intersections_cap = choose_parameter(get_parameter(np, internal_np::maximum_self_intersections),
+                                              std::size_t(1000));
+  if(r.self_intersections_cap > 0) {
+    PMP::self_intersections(faces(mesh), mesh, internal::Counting_iterator{&r.self_intersections},
+                            CGAL::parameters::maximum_number(unsigned(r.self_intersections_cap)));
+    r.self_intersections_capped = (r.self_intersections >= r.self_intersections_cap);
+  }
+
+  r.bbox_diagonal = internal::bbox_diagonal(mesh);
+  if(reference != nullptr)
+    r.distance = internal::distance_report(
+        mesh, *reference,
+        choose_parameter(get_parameter(np, internal_np::hausdorff_relative_error), 1e-4));
+  return r;
+}
+
+} // namespace Nonobtuse_remeshing
+} // namespace CGAL
+
+#endif // CGAL_NONOBTUSE_REMESHING_QUALITY_REPORT_H

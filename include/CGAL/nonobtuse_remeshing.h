@@ -1,0 +1,18 @@
+// Umbrella header of the Nonobtuse_remeshing package: remeshing of triangulated
+// surfaces into meshes whose angles all lie in [30, 90] degrees, certified
+// exactly (after Li, "Nonobtuse meshes with guaranteed angle bounds").
+//
+// The package lives in namespace CGAL::Nonobtuse_remeshing. Stages available:
+//   certify_angle_bounds()  exact certification of the angle bounds
+//   quality_report()        angles, valences, topology, defects, distances
+//   read_triangle_mesh(), write_mesh_atomically()  checked, exact file IO
+
+#ifndef CGAL_NONOBTUSE_REMESHING_H
+#define CGAL_NONOBTUSE_REMESHING_H
+
+#include <CGAL/Nonobtuse_remeshing/parameters.h>
+#include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
+#include <CGAL/Nonobtuse_remeshing/quality_report.h>
+#include <CGAL/Nonobtuse_remeshing/mesh_io.h>
+
+#endif // CGAL_NONOBTUSE_REMESHING_H
