@@ -1,0 +1,89 @@
+#include "cli.h"
+
+#include <CGAL/Nonobtuse_remeshing/mesh_io.h>
+
+#include <iostream>
+#include <sstream>
+
+#include <unistd.h>
+
+namespace nonobtuse_cli {
+
+namespace NR = CGAL::Nonobtuse_remeshing;
+
+Mesh load_mesh(const std::string& path, NR::Read_log* log)
+{
+  Mesh mesh;
+  NR::Read_log local;
+  NR::Read_log& used = log ? *log : local;
+  {
+    // CGAL's readers print their own diagnostics on std::cerr (the PLY reader
+    // even when not verbose); the tool says what went wrong in one line.
+    std::ostringstream silenced;
+    std::streambuf* const cerr_buffer = std::cerr.rdbuf(silenced.rdbuf());
+    try {
+      NR::read_triangle_mesh(path, mesh, used);
+    } catch(...) {
+      std::cerr.rdbuf(cerr_buffer);
+      throw;
+    }
+    std::cerr.rdbuf(cerr_buffer);
+  }
+  for(const std::string& repair : used.repairs)
+    std::cerr << "note: " << path << ": " << repair << "\n";
+  return mesh;
+}
+
+void check_output_path(const std::string& path)
+{
+  const std::size_t slash = path.find_last_of('/');
+  const std::string folder = (slash == std::string::npos) ? "." : path.substr(0, slash + 1);
+  if(path.empty() || slash + 1 == path.size())
+    throw NR::Output_error("cannot write '" + path + "': not a file name");
+  if(::access(folder.c_str(), W_OK) != 0)
+    throw NR::Output_error("cannot write '" + path + "': folder '" + folder +
+                           "' does not exist or is not writable");
+}
+
+bool parse_options(const std::string& name, const std::string& synopsis,
+                   const po::options_description& options,
+                   const po::positional_options_description& positional,
+                   int argc, char** argv, po::variables_map& vm, int& exit_code)
+{
+  try {
+    po::store(po::command_line_parser(argc, argv).options(options).positional(positional).run(), vm);
+    if(vm.count("help")) {
+      std::cout << "usage: nonobtuse-remesh " << name << " " << synopsis << "\n\n" << options;
+      exit_code = success;
+      return false;
+    }
+    po::notify(vm);
+  } catch(const po::error& e) {
+    std::cerr << "nonobtuse-remesh " << name << ": usage error: " << e.what()
+              << " (see --help)\n";
+    exit_code = usage_error;
+    return false;
+  }
+  return true;
+}
+
+int run_guarded(const std::string& name, const std::function<int()>& body)
+{
+  try {
+    return body();
+  } catch(const NR::Bad_input& e) {
+    std::cerr << "nonobtuse-remesh " << name << ": bad input: " << e.what() << "\n";
+    return bad_input;
+  } catch(const NR::Output_error& e) {
+    std::cerr << "nonobtuse-remesh " << name << ": output error: " << e.what() << "\n";
+    return bad_input;
+  } catch(const std::invalid_argument& e) {
+    std::cerr << "nonobtuse-remesh " << name << ": usage error: " << e.what() << "\n";
+    return usage_error;
+  } catch(const std::exception& e) {
+    std::cerr << "nonobtuse-remesh " << name << ": internal failure: " << e.what() << "\n";
+    return internal_failure;
+  }
+}
+
+} // namespace nonobtuse_cli

@@ -1,0 +1,55 @@
+// Shared pieces of the nonobtuse-remesh subcommands: exit codes, the mesh
+// type, checked loading with its messages, and the error-to-exit-code policy.
+
+#ifndef NONOBTUSE_REMESH_CLI_H
+#define NONOBTUSE_REMESH_CLI_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <boost/program_options.hpp>
+
+#include <functional>
+#include <string>
+
+namespace CGAL { namespace Nonobtuse_remeshing { struct Read_log; } }
+
+namespace nonobtuse_cli {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+namespace po = boost::program_options;
+
+enum Exit_code : int {
+  success = 0,
+  certification_failed = 1,
+  usage_error = 2,
+  bad_input = 3,
+  internal_failure = 4
+};
+
+// Reads a triangle mesh with the package's checked reader; repairs it made
+// are printed to standard error as "note:" lines and, if `log` is given,
+// kept there too.
+Mesh load_mesh(const std::string& path, CGAL::Nonobtuse_remeshing::Read_log* log = nullptr);
+
+// Throws CGAL::Nonobtuse_remeshing::Output_error unless a file can be created
+// at `path` (its folder exists and is writable), before any work is done.
+void check_output_path(const std::string& path);
+
+// Parses the command line of subcommand `name`; returns false and sets
+// `exit_code` when the run should stop there (help shown, or usage error).
+bool parse_options(const std::string& name, const std::string& synopsis,
+                   const po::options_description& options,
+                   const po::positional_options_description& positional,
+                   int argc, char** argv, po::variables_map& vm, int& exit_code);
+
+// Runs `body`, mapping exceptions to one-line messages and exit codes.
+int run_guarded(const std::string& name, const std::function<int()>& body);
+
+int certify_command(int argc, char** argv);
+int report_command(int argc, char** argv);
+
+} // namespace nonobtuse_cli
+
+#endif // NONOBTUSE_REMESH_CLI_H
