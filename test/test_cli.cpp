@@ -1,0 +1,187 @@
+// The command-line tool as a user meets it: help, exit codes, one-line errors,
+// no output file on failure, and JSON that agrees with the library.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/nonobtuse_remeshing.h>
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace NR = CGAL::Nonobtuse_remeshing;
+using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
+
+namespace {
+
+struct Outcome
+{
+  int code;
+  std::string out;  // standard output
+  std::string err;  // standard error
+};
+
+std::string slurp(const std::string& path)
+{
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+std::string scratch()
+{
+  static int counter = 0;
+  const std::string folder = ::testing::TempDir() + "nonobtuse_cli_" + std::to_string(::getpid()) +
+                             "_" + std::to_string(counter++);
+  std::system(("rm -rf '" + folder + "' && mkdir -p '" + folder + "'").c_str());
+  return folder;
+}
+
+Outcome run(const std::string& arguments)
+{
+  const std::string folder = scratch();
+  const std::string command = std::string(NONOBTUSE_TOOL) + " " + arguments + " >" + folder +
+                              "/out.txt 2>" + folder + "/err.txt";
+  const int status = std::system(command.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(folder + "/out.txt"),
+          slurp(folder + "/err.txt")};
+}
+
+std::string data(const std::string& name) { return std::string(NONOBTUSE_TEST_DATA) + "/" + name; }
+
+bool exists(const std::string& path) { return ::access(path.c_str(), F_OK) == 0; }
+
+std::size_t lines(const std::string& text)
+{
+  return std::count(text.begin(), text.end(), '\n');
+}
+
+} // namespace
+
+TEST(Cli, HelpForTheToolAndEverySubcommand)
+{
+  for(const std::string& args : std::vector<std::string>{"--help", "certify --help", "report --help"}) {
+    const Outcome r = run(args);
+    EXPECT_EQ(r.code, 0) << args;
+    EXPECT_NE(r.out.find("usage: nonobtuse-remesh"), std::string::npos) << args;
+  }
+}
+
+TEST(Cli, UsageErrorsExitTwo)
+{
+  for(const std::string& args : std::vector<std::string>{"", "frobnicate x.off", "certify", "certify a.off b.off",
+                                 "certify --min-angle abc " + data("sphere.off"),
+                                 "certify --min-angle 95 " + data("sphere.off"),
+                                 "report --no-such-option " + data("sphere.off")}) {
+    const Outcome r = run(args);
+    EXPECT_EQ(r.code, 2) << args << ": " << r.err;
+    EXPECT_FALSE(r.err.empty()) << args;
+  }
+}
+
+TEST(Cli, CertifyExitCodes)
+{
+  const Outcome cube = run("certify " + data("cube-meshed.off"));
+  EXPECT_EQ(cube.code, 0) << cube.err;
+  EXPECT_NE(cube.out.find("certified: yes"), std::string::npos);
+  const Outcome pig = run("certify " + data("pig.off"));
+  EXPECT_EQ(pig.code, 1);
+  EXPECT_NE(pig.out.find("certified: no"), std::string::npos);
+  // sphere.off has angles from 51.2 to 71.2 degrees
+  EXPECT_EQ(run("certify --min-angle 51 --max-angle 72 " + data("sphere.off")).code, 0);
+  EXPECT_EQ(run("certify --min-angle 52 " + data("sphere.off")).code, 1);
+  EXPECT_EQ(run("certify --max-angle 71 " + data("sphere.off")).code, 1);
+}
+
+TEST(Cli, BadInputIsOneLineExitThreeAndNoOutputFile)
+{
+  const std::string folder = scratch();
+  auto file = [&](const std::string& name, const std::string& text) {
+    std::ofstream(folder + "/" + name) << text;
+    return folder + "/" + name;
+  };
+  const std::string cases[][2] = {
+    {folder + "/absent.off", "cannot open"},
+    {file("empty.off", ""), "is empty"},
+    {file("garbage.ply", "ply\nformat nonsense\n\x7f\x45"), "cannot parse"},
+    {file("nothing.off", "OFF\n0 0 0\n"), "no face"},
+    {file("nan.off", "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n"), "non-finite"},
+    {file("inf.obj", "v 0 0 0\nv inf 0 0\nv 0 1 0\nf 1 2 3\n"), "non-finite"},
+    {file("mesh.txt", "OFF\n"), "unsupported file format"},
+  };
+  for(const auto& c : cases) {
+    const std::string json = folder + "/report.json";
+    const Outcome r = run("report " + c[0] + " --json " + json);
+    EXPECT_EQ(r.code, 3) << c[0] << ": " << r.err;
+    EXPECT_EQ(lines(r.err), 1u) << r.err;
+    EXPECT_NE(r.err.find(c[1]), std::string::npos) << r.err;
+    EXPECT_FALSE(exists(json)) << c[0];
+    EXPECT_EQ(run("certify " + c[0]).code, 3) << c[0];
+  }
+}
+
+TEST(Cli, UnwritableOutputIsRefusedBeforeAnyWork)
+{
+  const Outcome r = run("report " + data("sphere.off") + " --json /nonexistent-folder/report.json");
+  EXPECT_EQ(r.code, 3);
+  EXPECT_EQ(lines(r.err), 1u) << r.err;
+  EXPECT_NE(r.err.find("/nonexistent-folder/"), std::string::npos);
+  EXPECT_TRUE(r.out.empty());
+}
+
+TEST(Cli, RepairsAreAnnounced)
+{
+  const std::string folder = scratch();
+  std::ofstream(folder + "/quad.off") << "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
+  const Outcome quad = run("certify " + folder + "/quad.off");
+  EXPECT_EQ(quad.code, 0) << quad.err;  // two 45-45-90 triangles
+  EXPECT_NE(quad.err.find("note:"), std::string::npos);
+  EXPECT_NE(quad.err.find("triangulated 1 non-triangle face"), std::string::npos);
+
+  // two closed tetrahedra glued at one vertex: not a valid polygon mesh,
+  // repaired by duplicating that vertex
+  std::ofstream(folder + "/pinched.off")
+      << "OFF\n7 8 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n-1 0 0\n0 -1 0\n0 0 -1\n"
+         "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n3 0 4 5\n3 0 6 4\n3 0 5 6\n3 4 6 5\n";
+  const Outcome pinched = run("report " + folder + "/pinched.off --json " + folder + "/p.json");
+  EXPECT_EQ(pinched.code, 0) << pinched.err;
+  EXPECT_NE(pinched.err.find("orient_polygon_soup, 1 vertex(es) duplicated"), std::string::npos)
+      << pinched.err;
+  const auto j = nlohmann::json::parse(slurp(folder + "/p.json"));
+  EXPECT_EQ(j["vertices"], 8);
+  EXPECT_EQ(j["topology"]["connected_components"], 2);
+  EXPECT_EQ(j["input_repairs"].size(), 1u);
+}
+
+TEST(Cli, JsonReportAgreesWithTheLibrary)
+{
+  const std::string folder = scratch();
+  const std::string json = folder + "/pig.json";
+  const Outcome r = run("report " + data("pig.off") + " --reference " + data("pig.off") + " --json " + json);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(slurp(json));
+
+  Mesh mesh;
+  NR::read_triangle_mesh(data("pig.off"), mesh);
+  const NR::Quality_report q = NR::quality_report(mesh, &mesh);
+  EXPECT_EQ(j["vertices"], q.vertices);
+  EXPECT_EQ(j["faces"], q.faces);
+  EXPECT_EQ(j["certification"]["certified"], false);
+  EXPECT_EQ(j["certification"]["too_small_corners"], q.too_small_corners);
+  EXPECT_EQ(j["certification"]["too_large_corners"], q.too_large_corners);
+  EXPECT_EQ(j["certification"]["min_angle"].get<double>(), q.min_angle);
+  EXPECT_EQ(j["topology"]["border_cycles"], 7);
+  EXPECT_EQ(j["topology"]["euler_characteristic"], -5);
+  EXPECT_EQ(j["angle_histogram"]["counts"].size(), 36u);
+  EXPECT_EQ(j["valences"]["boundary"].size(), q.boundary_valences.size());
+  EXPECT_EQ(j["self_intersections"]["face_pairs"], q.self_intersections);
+  EXPECT_EQ(j["distance_to_reference"]["hausdorff_symmetric"], 0.);
+  // nothing but the report was left in the folder (no temporary file)
+  EXPECT_EQ(std::system(("test $(ls -A '" + folder + "' | wc -l) -eq 1").c_str()), 0);
+}
