@@ -119,6 +119,46 @@ TEST(AngleCertification, ThirtyDegreeCornerAcceptedExactlyWhenAtLeastThirty)
   EXPECT_TRUE(NR::certify_angle_bounds(triangle(a, b, Point(1, 2, 1))).is_certified());
 }
 
+// u = (a, a, 0) and v = (a, -a, 0) with a = 1 + 2^-30 are exactly orthogonal,
+// but a*a is not a double: intervals cannot decide u.v >= 0, the exact path
+// must.
+TEST(AngleCertification, ExactPathDecidesWhatIntervalsCannot)
+{
+  const double a = 1. + std::ldexp(1., -30);
+  const double o[3] = {0, 0, 0}, b[3] = {a, a, 0}, c[3] = {a, -a, 0};
+  const NR::Angle_bounds bounds;
+  {
+    CGAL::Protect_FPU_rounding<true> protection;
+    EXPECT_THROW(NR::internal::triangle_verdict_with<CGAL::Interval_nt_advanced>({o, b, c}, bounds),
+                 CGAL::Uncertain_conversion_exception);
+  }
+  EXPECT_TRUE(NR::internal::triangle_verdict({o, b, c}, bounds).within_bounds());
+  // one ulp further apart: obtuse at the origin; one ulp closer: acute
+  const double wide[3] = {a, -ulp_step(a, +1), 0}, narrow[3] = {a, -ulp_step(a, -1), 0};
+  const auto obtuse = NR::internal::triangle_verdict({o, b, wide}, bounds);
+  EXPECT_TRUE(obtuse.corners[0].too_large);
+  EXPECT_FALSE(NR::internal::triangle_verdict({o, b, narrow}, bounds).corners[0].too_large);
+}
+
+TEST(AngleCertification, PolygonMeshesAreRefused)
+{
+  Mesh quad;
+  quad.add_face(quad.add_vertex(Point(0, 0, 0)), quad.add_vertex(Point(1, 0, 0)),
+                quad.add_vertex(Point(1, 1, 0)), quad.add_vertex(Point(0, 1, 0)));
+  EXPECT_THROW(NR::certify_angle_bounds(quad), std::invalid_argument);
+}
+
+TEST(AngleCertification, HugeAndTinyCoordinatesMeasureCorrectly)
+{
+  for(double scale : {1e-170, 1e170}) {
+    const auto cert = NR::certify_angle_bounds(
+        triangle(Point(0, 0, 0), Point(scale, 0, 0), Point(0, scale, 0)));
+    EXPECT_TRUE(cert.is_certified());
+    EXPECT_EQ(cert.max_angle, 90.) << scale;
+    EXPECT_NEAR(cert.min_angle, 45., 1e-12) << scale;
+  }
+}
+
 TEST(AngleCertification, DegenerateFacesFail)
 {
   // zero area: three collinear points; angles 0, 0 and 180 would pass [0, 180]

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 #include <sys/wait.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace NR = CGAL::Nonobtuse_remeshing;
@@ -114,6 +115,7 @@ TEST(Cli, BadInputIsOneLineExitThreeAndNoOutputFile)
     {file("nan.off", "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n"), "non-finite"},
     {file("inf.obj", "v 0 0 0\nv inf 0 0\nv 0 1 0\nf 1 2 3\n"), "non-finite"},
     {file("mesh.txt", "OFF\n"), "unsupported file format"},
+    {file("huge.off", "OFF\n1000000000 1000000000 0\n0 0 0\n"), "more than its"},
   };
   for(const auto& c : cases) {
     const std::string json = folder + "/report.json";
@@ -133,6 +135,22 @@ TEST(Cli, UnwritableOutputIsRefusedBeforeAnyWork)
   EXPECT_EQ(lines(r.err), 1u) << r.err;
   EXPECT_NE(r.err.find("/nonexistent-folder/"), std::string::npos);
   EXPECT_TRUE(r.out.empty());
+}
+
+TEST(Cli, OutputOverAFolderOrTheInputIsRefused)
+{
+  const std::string folder = scratch();
+  ::mkdir((folder + "/taken.json").c_str(), 0755);
+  Outcome r = run("report " + data("sphere.off") + " --json " + folder + "/taken.json");
+  EXPECT_EQ(r.code, 3);
+  EXPECT_NE(r.err.find("it is a folder"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty());
+  std::system(("cp " + data("sphere.off") + " " + folder + "/in.off").c_str());
+  const std::string before = slurp(folder + "/in.off");
+  r = run("report " + folder + "/in.off --json " + folder + "/in.off");
+  EXPECT_EQ(r.code, 3);
+  EXPECT_NE(r.err.find("over the input"), std::string::npos) << r.err;
+  EXPECT_EQ(slurp(folder + "/in.off"), before);
 }
 
 TEST(Cli, RepairsAreAnnounced)

@@ -15,6 +15,7 @@
 #include <random>
 #include <set>
 #include <string>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace NR = CGAL::Nonobtuse_remeshing;
@@ -123,6 +124,7 @@ TEST_P(ReportOnSampleMesh, FieldsAgreeWithIndependentComputation)
   EXPECT_EQ(r.non_manifold_vertices, 0u);
   EXPECT_EQ(std::accumulate(r.angle_histogram.begin(), r.angle_histogram.end(), std::size_t(0)),
             3 * r.faces);
+  EXPECT_TRUE(r.has_angles);
   const auto cert = NR::certify_angle_bounds(mesh);
   EXPECT_EQ(r.certified, cert.is_certified());
   EXPECT_EQ(r.too_small_corners, cert.too_small_corners);
@@ -145,13 +147,32 @@ INSTANTIATE_TEST_SUITE_P(SampleMeshes, ReportOnSampleMesh,
 
 TEST(QualityReport, AngleHistogramBins)
 {
-  // 45-45-90: one corner in [90, 95), two in [45, 50)
+  // 45-45-90: the right angle in [85, 90], two corners in [45, 50)
   Mesh m;
   m.add_face(m.add_vertex(Point(0, 0, 0)), m.add_vertex(Point(1, 0, 0)), m.add_vertex(Point(0, 1, 0)));
-  const NR::Quality_report r = NR::quality_report(m);
-  EXPECT_EQ(r.angle_histogram[18], 1u);
+  NR::Quality_report r = NR::quality_report(m);
+  EXPECT_EQ(r.angle_histogram[17], 1u);
   EXPECT_EQ(r.angle_histogram[9], 2u);
   EXPECT_EQ(r.boundary_valences.at(2), 3u);
+  // The exact 30-60-90 triangle (see test_certification.cpp): its 30 degree
+  // corner measures 29.999999999999996 in double, but it is certified, so it
+  // is shown as 30 and counted in [30, 35).
+  Mesh t;
+  t.add_face(t.add_vertex(Point(0, 0, 0)), t.add_vertex(Point(1.5, 1.5, 0)), t.add_vertex(Point(1, 2, 1)));
+  r = NR::quality_report(t);
+  EXPECT_TRUE(r.certified);
+  EXPECT_GE(r.min_angle, 30.);
+  EXPECT_NEAR(r.min_angle, 30., 1e-12);
+  EXPECT_EQ(r.max_angle, 90.);
+  EXPECT_EQ(r.angle_histogram[6], 1u);   // 30
+  EXPECT_EQ(r.angle_histogram[12], 1u);  // 60
+  EXPECT_EQ(r.angle_histogram[17], 1u);  // 90
+  // degenerate faces only: no angle to show
+  Mesh flat;
+  flat.add_face(flat.add_vertex(Point(0, 0, 0)), flat.add_vertex(Point(1, 0, 0)), flat.add_vertex(Point(2, 0, 0)));
+  r = NR::quality_report(flat);
+  EXPECT_FALSE(r.has_angles);
+  EXPECT_EQ(std::accumulate(r.angle_histogram.begin(), r.angle_histogram.end(), std::size_t(0)), 0u);
 }
 
 TEST(QualityReport, DistanceToATranslatedCube)
@@ -204,6 +225,13 @@ TEST(QualityReport, SelfIntersectionsAndTheirCap)
       NR::quality_report(two, nullptr, NR::parameters::maximum_self_intersections(std::size_t(5)));
   EXPECT_EQ(capped.self_intersections, 5u);
   EXPECT_TRUE(capped.self_intersections_capped);
+  // a cap equal to the true count is reached but not exceeded
+  const NR::Quality_report exact = NR::quality_report(
+      two, nullptr, NR::parameters::maximum_self_intersections(all.self_intersections));
+  EXPECT_EQ(exact.self_intersections, all.self_intersections);
+  EXPECT_FALSE(exact.self_intersections_capped);
+  EXPECT_THROW(NR::quality_report(two, nullptr, NR::parameters::maximum_self_intersections(std::size_t(0))),
+               std::invalid_argument);
 }
 
 TEST(QualityReport, NonManifoldVertexIsCounted)
@@ -301,7 +329,21 @@ TEST(MeshIO, BadInputIsRefusedWithAReason)
   expect_refused("garbage.off", "this is not a mesh\n\x01\x02\x03", "cannot parse");
   expect_refused("no_faces.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n", "no face");
   expect_refused("nan.off", "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n", "non-finite");
-  expect_refused("index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n", "");
+  expect_refused("index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n", "cannot parse");
+  expect_refused("index.ply",
+                 "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+                 "property double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                 "0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n",
+                 "refers to vertex 9");
+  expect_refused("huge.off", "OFF\n1000000000 1000000000 0\n0 0 0\n", "more than its");
+  expect_refused("nan.ply",
+                 "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+                 "property double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                 "0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n",
+                 "non-finite");
+  expect_refused("overflow.off", "OFF\n3 1 0\n0 0 0\n1e400 0 0\n0 1 0\n3 0 1 2\n", "non-finite");
+  ::mkdir((folder + "/folder.off").c_str(), 0755);
+  expect_refused("folder.off", "", "not a regular file");
   expect_refused("mesh.txt", "OFF\n", "unsupported file format");
 }
 

@@ -48,9 +48,13 @@ int certify_command(int argc, char** argv)
               << "corners below " << c.min_bound << ": " << c.too_small_corners << "\n"
               << "corners above " << c.max_bound << ": " << c.too_large_corners << "\n"
               << "degenerate faces: " << c.degenerate_faces << "\n"
-              << std::setprecision(10)
-              << "min angle: " << c.min_angle << "\n"
-              << "max angle: " << c.max_angle << "\n";
+              << std::setprecision(10);
+    if(c.has_angles())
+      std::cout << "min angle: " << c.min_angle << "\n"
+                << "max angle: " << c.max_angle << "\n";
+    else
+      std::cout << "min angle: n/a (every face is degenerate)\n"
+                << "max angle: n/a\n";
     if(!c.offending_faces.empty()) {
       std::cout << "offending faces (" << c.offending_faces.size() << "):";
       const std::size_t shown = (std::min<std::size_t>)(10, c.offending_faces.size());

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <sstream>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace nonobtuse_cli {
@@ -34,7 +35,7 @@ Mesh load_mesh(const std::string& path, NR::Read_log* log)
   return mesh;
 }
 
-void check_output_path(const std::string& path)
+void check_output_path(const std::string& path, const std::vector<std::string>& inputs)
 {
   const std::size_t slash = path.find_last_of('/');
   const std::string folder = (slash == std::string::npos) ? "." : path.substr(0, slash + 1);
@@ -43,6 +44,16 @@ void check_output_path(const std::string& path)
   if(::access(folder.c_str(), W_OK) != 0)
     throw NR::Output_error("cannot write '" + path + "': folder '" + folder +
                            "' does not exist or is not writable");
+  struct stat target;
+  if(::stat(path.c_str(), &target) != 0)
+    return;  // a new file
+  if(S_ISDIR(target.st_mode))
+    throw NR::Output_error("cannot write '" + path + "': it is a folder");
+  for(const std::string& input : inputs) {
+    struct stat source;
+    if(::stat(input.c_str(), &source) == 0 && source.st_dev == target.st_dev && source.st_ino == target.st_ino)
+      throw NR::Output_error("refusing to write '" + path + "' over the input '" + input + "'");
+  }
 }
 
 bool parse_options(const std::string& name, const std::string& synopsis,
@@ -82,6 +93,9 @@ int run_guarded(const std::string& name, const std::function<int()>& body)
     return usage_error;
   } catch(const std::exception& e) {
     std::cerr << "nonobtuse-remesh " << name << ": internal failure: " << e.what() << "\n";
+    return internal_failure;
+  } catch(...) {
+    std::cerr << "nonobtuse-remesh " << name << ": internal failure: unknown exception\n";
     return internal_failure;
   }
 }

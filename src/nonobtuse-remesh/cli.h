@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace CGAL { namespace Nonobtuse_remeshing { struct Read_log; } }
 
@@ -34,8 +35,9 @@ enum Exit_code : int {
 Mesh load_mesh(const std::string& path, CGAL::Nonobtuse_remeshing::Read_log* log = nullptr);
 
 // Throws CGAL::Nonobtuse_remeshing::Output_error unless a file can be created
-// at `path` (its folder exists and is writable), before any work is done.
-void check_output_path(const std::string& path);
+// at `path` (its folder exists and is writable, it is not a folder, and it is
+// none of the `inputs`), before any work is done.
+void check_output_path(const std::string& path, const std::vector<std::string>& inputs);
 
 // Parses the command line of subcommand `name`; returns false and sets
 // `exit_code` when the run should stop there (help shown, or usage error).

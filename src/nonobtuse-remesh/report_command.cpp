@@ -43,9 +43,10 @@ json report_json(const std::string& path, const NR::Quality_report& r,
                         {"too_large_corners", r.too_large_corners},
                         {"degenerate_faces", r.degenerate_faces},
                         {"offending_faces", r.offending_faces},
-                        {"min_angle", r.min_angle},
-                        {"max_angle", r.max_angle}};
-  j["angle_histogram"] = {{"bin_width_degrees", 5}, {"counts", r.angle_histogram}};
+                        {"min_angle", r.has_angles ? json(r.min_angle) : json(nullptr)},
+                        {"max_angle", r.has_angles ? json(r.max_angle) : json(nullptr)}};
+  j["angle_histogram"] = {{"bins", "[5i, 5i+5) for i = 0..35, except [85, 90] and (90, 95)"},
+                          {"counts", r.angle_histogram}};
   j["valences"] = {{"interior", valences_json(r.interior_valences)},
                    {"boundary", valences_json(r.boundary_valences)}};
   j["topology"] = {{"border_cycles", r.border_cycles},
@@ -83,11 +84,13 @@ void print_report(std::ostream& out, const std::string& path, const NR::Quality_
 {
   out << std::setprecision(10) << "mesh: " << path << "\n"
       << "vertices: " << r.vertices << "  edges: " << r.edges << "  faces: " << r.faces << "\n"
-      << "angles: min " << r.min_angle << "  max " << r.max_angle << "\n"
-      << "certified in [" << r.min_bound << ", " << r.max_bound << "]: "
+      << "angles: ";
+  if(r.has_angles) out << "min " << r.min_angle << "  max " << r.max_angle << "\n";
+  else out << "n/a (every face is degenerate)\n";
+  out << "certified in [" << r.min_bound << ", " << r.max_bound << "]: "
       << (r.certified ? "yes" : "no") << " (corners below: " << r.too_small_corners
       << ", above: " << r.too_large_corners << ", degenerate faces: " << r.degenerate_faces << ")\n"
-      << "angle histogram (5 degree bins from 0):";
+      << "angle histogram (5 degree bins from 0; a right angle counts in [85, 90]):";
   for(std::size_t count : r.angle_histogram) out << " " << count;
   out << "\n";
   print_valences(out, "interior valences", r.interior_valences);
@@ -126,7 +129,7 @@ int report_command(int argc, char** argv)
     ("hausdorff-error", po::value<double>(&hausdorff_error)->default_value(1e-4),
      "Hausdorff error bound, as a fraction of the reference's bbox diagonal")
     ("max-self-intersections", po::value<std::size_t>(&max_self_intersections)->default_value(1000),
-     "stop counting self-intersecting face pairs there");
+     "stop counting self-intersecting face pairs there (at least 1)");
   po::positional_options_description positional;
   positional.add("mesh", 1);
   po::variables_map vm;
@@ -141,12 +144,16 @@ int report_command(int argc, char** argv)
     const NR::Angle_bounds bounds(min_angle, max_angle);
     if(!(hausdorff_error > 0.))
       throw std::invalid_argument("--hausdorff-error must be positive");
-    if(!json_path.empty()) check_output_path(json_path);
+    if(!json_path.empty()) check_output_path(json_path, {path, reference_path});
 
     NR::Read_log log;
     const Mesh mesh = load_mesh(path, &log);
     Mesh reference;
-    if(!reference_path.empty()) reference = load_mesh(reference_path);
+    if(!reference_path.empty()) {
+      reference = load_mesh(reference_path);
+      if(!(NR::internal::bbox_diagonal(reference) > 0.))
+        throw NR::Bad_input("the reference '" + reference_path + "' has a zero-size bounding box");
+    }
 
     const NR::Quality_report r = NR::quality_report(
         mesh, reference_path.empty() ? nullptr : &reference,

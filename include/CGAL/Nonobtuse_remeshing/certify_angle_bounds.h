@@ -12,7 +12,9 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
+#include <stdexcept>
 #include <vector>
 
 namespace CGAL {
@@ -43,12 +45,29 @@ struct Angle_certificate
   std::vector<FaceDescriptor> offending_faces;
 
   /// smallest and largest corner angle in degrees, measured in double over the
-  /// non-degenerate faces; a corner that passes is reported within the bounds
+  /// non-degenerate faces; a corner that passes is reported within the bounds.
+  /// Meaningless (180 and 0) when `has_angles()` is false.
   double min_angle = 180.;
   double max_angle = 0.;
+  /// corners of the non-degenerate faces in 5 degree bins, with the measured
+  /// angles shown as above: bin i is [5i, 5i+5), except that bin 17 is
+  /// [85, 90] and bin 18 is (90, 95), so that a right angle counts as
+  /// nonobtuse; 180 falls in bin 35
+  std::array<std::size_t, 36> angle_histogram{};
 
+  bool has_angles() const { return faces > degenerate_faces; }
   bool is_certified() const { return offending_faces.empty() && faces > 0; }
 };
+
+namespace internal {
+
+inline int angle_bin(double degrees)
+{
+  if(degrees <= 90.) return (std::max)(0, (std::min)(17, int(degrees / 5.)));
+  return (std::max)(18, (std::min)(35, int(degrees / 5.)));
+}
+
+} // namespace internal
 
 /// \ingroup PkgNonobtuseRemeshingRef
 /// Decides exactly, for every corner of every face of the triangle mesh `mesh`,
@@ -62,9 +81,12 @@ struct Angle_certificate
 /// \cgalNamedParamsEnd
 ///
 /// Bounds of 0, 30, 45, 60, 90, 120, 135, 150 and 180 degrees are tested
-/// exactly; any other bound is tightened by less than 1e-12/sin(bound) radians,
-/// so the certified interval is never looser than the one requested.
-/// A mesh with no face is not certified.
+/// exactly; for any other bound the cosine is moved by 1e-12 in the safe
+/// direction, so the certified interval is never looser than the one
+/// requested. A mesh with no face is not certified.
+///
+/// \pre `mesh` is a triangle mesh (std::invalid_argument is thrown otherwise)
+/// whose points have double coordinates.
 template <typename TriangleMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Angle_certificate<typename boost::graph_traits<TriangleMesh>::face_descriptor>
@@ -80,6 +102,9 @@ certify_angle_bounds(const TriangleMesh& mesh,
                             choose_parameter(get_parameter(np, internal_np::max_angle), 90.));
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, mesh));
+
+  if(!is_triangle_mesh(mesh))
+    throw std::invalid_argument("certify_angle_bounds: the mesh has a face that is not a triangle");
 
   Angle_certificate<face_descriptor> result;
   result.min_bound = bounds.min_degrees();
@@ -111,6 +136,7 @@ certify_angle_bounds(const TriangleMesh& mesh,
       if(!corner.too_large) angle = (std::min)(angle, bounds.max_degrees());
       result.min_angle = (std::min)(result.min_angle, angle);
       result.max_angle = (std::max)(result.max_angle, angle);
+      ++result.angle_histogram[internal::angle_bin(angle)];
     }
   }
   return result;

@@ -20,7 +20,9 @@
 #include <atomic>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -29,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace CGAL {
@@ -72,20 +75,46 @@ inline bool is_mesh_extension(const std::string& ext)
   return ext == "off" || ext == "obj" || ext == "ply" || ext == "stl";
 }
 
-// True when the text of the file holds a "nan" or "inf" token: text readers
-// stop there, and the user should hear the real reason.
+// True when the file holds a whitespace-separated token that reads as a
+// non-finite number (nan, inf, 1e400): text readers stop there, and the user
+// should hear the real reason.
 inline bool has_non_finite_token(const std::string& path)
 {
   std::ifstream in(path);
   std::string token;
   while(in >> token) {
-    std::transform(token.begin(), token.end(), token.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    const std::size_t start = (token[0] == '-' || token[0] == '+') ? 1 : 0;
-    if(token.compare(start, 3, "nan") == 0 || token.compare(start, 3, "inf") == 0)
+    char* end = nullptr;
+    const double value = std::strtod(token.c_str(), &end);
+    if(end != token.c_str() && *end == '\0' && !std::isfinite(value))
       return true;
   }
   return false;
+}
+
+// CGAL's OFF reader sizes its arrays from the header before reading them: a
+// header that announces more elements than the file can hold is refused
+// first (an ASCII vertex takes at least 6 bytes, a face at least 8; binary
+// ones more), so that a lying header cannot exhaust memory.
+inline void check_off_header(const std::string& path, std::uintmax_t file_size)
+{
+  std::ifstream in(path);
+  std::string token;
+  std::vector<std::string> tokens;
+  while(tokens.size() < 5 && in >> token) {
+    if(token[0] == '#') { std::getline(in, token); continue; }
+    tokens.push_back(token);
+  }
+  std::size_t first = 0;
+  while(first < tokens.size() && (tokens[first].find("OFF") != std::string::npos || tokens[first] == "BINARY"))
+    ++first;
+  if(first == 0 || first + 2 > tokens.size())
+    return;  // not an OFF header CGAL would accept: let it say so
+  char* end = nullptr;
+  const double vertices = std::strtod(tokens[first].c_str(), &end);
+  const double faces = std::strtod(tokens[first + 1].c_str(), &end);
+  if(vertices > double(file_size) / 6. || faces > double(file_size) / 8.)
+    throw Bad_input("'" + path + "' announces " + tokens[first] + " vertices and " + tokens[first + 1] +
+                    " faces, more than its " + std::to_string(file_size) + " bytes can hold");
 }
 
 template <typename Point>
@@ -95,13 +124,17 @@ void read_soup(const std::string& path, std::vector<Point>& points,
   const std::string ext = file_extension(path);
   if(!is_mesh_extension(ext))
     throw Bad_input("unsupported file format '" + path + "' (expected .off, .obj, .ply or .stl)");
-  {
-    std::ifstream probe(path, std::ios::binary);
-    if(!probe)
-      throw Bad_input("cannot open '" + path + "'");
-    if(probe.peek() == std::ifstream::traits_type::eof())
-      throw Bad_input("'" + path + "' is empty");
-  }
+  struct stat status;
+  if(::stat(path.c_str(), &status) != 0)
+    throw Bad_input("cannot open '" + path + "': no such file");
+  if(!S_ISREG(status.st_mode))
+    throw Bad_input("cannot read '" + path + "': not a regular file");
+  if(!std::ifstream(path, std::ios::binary))
+    throw Bad_input("cannot open '" + path + "': permission denied");
+  if(status.st_size == 0)
+    throw Bad_input("'" + path + "' is empty");
+  if(ext == "off")
+    check_off_header(path, std::uintmax_t(status.st_size));
   bool ok = false;
   try {
     if(ext == "off") ok = CGAL::IO::read_OFF(path, points, polygons);
@@ -112,7 +145,7 @@ void read_soup(const std::string& path, std::vector<Point>& points,
     ok = false;
   }
   if(!ok) {
-    if(ext != "ply" && has_non_finite_token(path))
+    if(has_non_finite_token(path))
       throw Bad_input("'" + path + "' has a non-finite (nan or inf) coordinate");
     throw Bad_input("cannot parse '" + path + "' as " + ext + ": unreadable or malformed file");
   }

@@ -26,7 +26,9 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <map>
+#include <stdexcept>
 #include <unordered_map>
 #include <vector>
 
@@ -64,9 +66,11 @@ struct Quality_report
   bool certified = false;
   std::size_t too_small_corners = 0, too_large_corners = 0, degenerate_faces = 0;
   std::size_t offending_faces = 0;
+  /// false when every face is degenerate: min and max angle are meaningless
+  bool has_angles = false;
   double min_angle = 0., max_angle = 0.;
-  /// corner angles in 5 degree bins: bin i counts [5i, 5i+5), the last one
-  /// also holds 180
+  /// corner angles in 5 degree bins, as in `Angle_certificate`: bin i counts
+  /// [5i, 5i+5), except bin 17 = [85, 90] and bin 18 = (90, 95)
   std::array<std::size_t, 36> angle_histogram{};
   /// valence (number of incident edges) to number of vertices
   std::map<std::size_t, std::size_t> interior_valences, boundary_valences;
@@ -74,7 +78,8 @@ struct Quality_report
   std::size_t connected_components = 0;
   long euler_characteristic = 0;
   std::size_t non_manifold_vertices = 0;
-  /// self-intersecting face pairs, counted up to `self_intersections_cap`
+  /// intersecting face pairs (beyond shared vertices and edges; a degenerate
+  /// face counts as a pair with itself), counted up to `self_intersections_cap`
   std::size_t self_intersections = 0;
   std::size_t self_intersections_cap = 0;
   bool self_intersections_capped = false;
@@ -130,6 +135,8 @@ Distance_report distance_report(const TriangleMesh& mesh, const TriangleMesh& re
 
   Distance_report r;
   r.reference_diagonal = bbox_diagonal(reference);
+  if(!(r.reference_diagonal > 0.))
+    throw std::invalid_argument("the reference mesh has a zero-size bounding box");
   const double scale = r.reference_diagonal > 0. ? 100. / r.reference_diagonal : 0.;
   const double error = relative_error * r.reference_diagonal;
   r.hausdorff_to_reference =
@@ -169,6 +176,9 @@ struct Counting_iterator
 /// `CGAL::Surface_mesh` or any model of `FaceListGraph`). If `reference` is
 /// not null, the distances to it are computed too.
 ///
+/// \pre `mesh` and `reference` are triangle meshes; the reference's bounding
+/// box is not a point (std::invalid_argument is thrown otherwise).
+///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{min_angle, max_angle} the bounds to certify (default 30, 90) \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_self_intersections} cap on the counted self-intersecting
@@ -203,22 +213,10 @@ Quality_report quality_report(const TriangleMesh& mesh,
   r.too_large_corners = certificate.too_large_corners;
   r.degenerate_faces = certificate.degenerate_faces;
   r.offending_faces = certificate.offending_faces.size();
+  r.has_angles = certificate.has_angles();
   r.min_angle = certificate.min_angle;
   r.max_angle = certificate.max_angle;
-
-  const auto vpm = get(CGAL::vertex_point, mesh);
-  for(face_descriptor f : faces(mesh)) {
-    const halfedge_descriptor h = halfedge(f, mesh);
-    const auto& a = get(vpm, source(h, mesh));
-    const auto& b = get(vpm, target(h, mesh));
-    const auto& c = get(vpm, target(next(h, mesh), mesh));
-    const decltype(&a) pts[3] = {&a, &b, &c};
-    for(int i = 0; i < 3; ++i) {
-      const double angle = internal::corner_angle_degrees(*pts[i], *pts[(i + 1) % 3], *pts[(i + 2) % 3]);
-      if(std::isfinite(angle))
-        ++r.angle_histogram[(std::min)(35, int(angle / 5.))];
-    }
-  }
+  r.angle_histogram = certificate.angle_histogram;
 
   for(auto v : vertices(mesh)) {
     if(PMP::is_non_manifold_vertex(v, mesh)) ++r.non_manifold_vertices;
@@ -237,11 +235,13 @@ Quality_report quality_report(const TriangleMesh& mesh,
 
   r.self_intersections_cap = choose_parameter(get_parameter(np, internal_np::maximum_self_intersections),
                                               std::size_t(1000));
-  if(r.self_intersections_cap > 0) {
-    PMP::self_intersections(faces(mesh), mesh, internal::Counting_iterator{&r.self_intersections},
-                            CGAL::parameters::maximum_number(unsigned(r.self_intersections_cap)));
-    r.self_intersections_capped = (r.self_intersections >= r.self_intersections_cap);
-  }
+  if(r.self_intersections_cap < 1 || r.self_intersections_cap >= (std::numeric_limits<unsigned>::max)())
+    throw std::invalid_argument("maximum_self_intersections must be between 1 and 2^32 - 2");
+  // ask for one more than the cap: finding it is what proves the cap was hit
+  PMP::self_intersections(faces(mesh), mesh, internal::Counting_iterator{&r.self_intersections},
+                          CGAL::parameters::maximum_number(unsigned(r.self_intersections_cap + 1)));
+  r.self_intersections_capped = (r.self_intersections > r.self_intersections_cap);
+  r.self_intersections = (std::min)(r.self_intersections, r.self_intersections_cap);
 
   r.bbox_diagonal = internal::bbox_diagonal(mesh);
   if(reference != nullptr)

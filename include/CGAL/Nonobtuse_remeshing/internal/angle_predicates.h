@@ -27,6 +27,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace CGAL {
 namespace Nonobtuse_remeshing {
@@ -63,8 +64,9 @@ inline bool exact_cosine_bound(double degrees, Cosine_bound& bound)
 
 // Conservative rounding for other bounds: the double cosine of the bound is
 // within 2e-15 of the true value, so moving it by 1e-12 in the safe direction
-// proves a bound never looser than the one requested (tighter by less than
-// 1e-12 / sin(bound) radians).
+// proves a bound never looser than the one requested (tighter by about
+// 1e-12 / sin(bound) radians; more, up to 1.5e-6 radians, within a few
+// micro-degrees of 0 and 180, where the cosine is flat).
 constexpr double cosine_safety_margin = 1e-12;
 
 inline Cosine_bound cosine_bound(double degrees, bool is_lower_bound)
@@ -202,30 +204,38 @@ inline Triangle_verdict triangle_verdict(const std::array<const double*, 3>& t,
       return triangle_verdict_with<Interval_nt_advanced>(t, bounds);
     } catch(Uncertain_conversion_exception&) {}
   }
-  Protect_FPU_rounding<false> protection(CGAL_FE_TONEAREST);
   return triangle_verdict_with<Exact_rational>(t, bounds);
 }
 
+// The certificate is about the doubles that are stored and written: points
+// must have double coordinates (as with Epick or Simple_cartesian<double>).
 template <typename Point>
 Triangle_verdict triangle_verdict(const Point& a, const Point& b, const Point& c,
                                   const Angle_bounds& bounds)
 {
-  const double pa[3] = {to_double(a.x()), to_double(a.y()), to_double(a.z())};
-  const double pb[3] = {to_double(b.x()), to_double(b.y()), to_double(b.z())};
-  const double pc[3] = {to_double(c.x()), to_double(c.y()), to_double(c.z())};
+  static_assert(std::is_same<typename std::decay<decltype(a.x())>::type, double>::value,
+                "exact angle certification needs points with double coordinates");
+  const double pa[3] = {a.x(), a.y(), a.z()};
+  const double pb[3] = {b.x(), b.y(), b.z()};
+  const double pc[3] = {c.x(), c.y(), c.z()};
   return triangle_verdict({pa, pb, pc}, bounds);
 }
 
 /// Approximate angle in degrees at `apex`, for reports only (the verdicts
 /// above are exact). atan2 of |u x v| and u.v keeps small and large angles
 /// accurate; dividing by pi before scaling keeps exact right angles at 90.
+/// u and v are first scaled by powers of two, so that no product overflows
+/// or underflows whatever the coordinates' magnitude.
 template <typename Point>
 double corner_angle_degrees(const Point& apex, const Point& p, const Point& q)
 {
-  const double ux = to_double(p.x()) - to_double(apex.x()), uy = to_double(p.y()) - to_double(apex.y()),
-               uz = to_double(p.z()) - to_double(apex.z());
-  const double vx = to_double(q.x()) - to_double(apex.x()), vy = to_double(q.y()) - to_double(apex.y()),
-               vz = to_double(q.z()) - to_double(apex.z());
+  double ux = p.x() - apex.x(), uy = p.y() - apex.y(), uz = p.z() - apex.z();
+  double vx = q.x() - apex.x(), vy = q.y() - apex.y(), vz = q.z() - apex.z();
+  int eu = 0, ev = 0;
+  std::frexp((std::max)({std::abs(ux), std::abs(uy), std::abs(uz)}), &eu);
+  std::frexp((std::max)({std::abs(vx), std::abs(vy), std::abs(vz)}), &ev);
+  ux = std::ldexp(ux, -eu); uy = std::ldexp(uy, -eu); uz = std::ldexp(uz, -eu);
+  vx = std::ldexp(vx, -ev); vy = std::ldexp(vy, -ev); vz = std::ldexp(vz, -ev);
   const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
   const double pi = 3.141592653589793238462643383279502884;
   return std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), ux * vx + uy * vy + uz * vz) / pi * 180.;
