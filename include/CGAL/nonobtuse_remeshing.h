@@ -3,6 +3,7 @@
 // exactly (after Li, "Nonobtuse meshes with guaranteed angle bounds").
 //
 // The package lives in namespace CGAL::Nonobtuse_remeshing. Stages available:
+//   nonobtuse_marching_cubes()  the initial mesh (thesis, chapter 4)
 //   certify_angle_bounds()  exact certification of the angle bounds
 //   quality_report()        angles, valences, topology, defects, distances
 //   read_triangle_mesh(), write_mesh_atomically()  checked, exact file IO
@@ -14,5 +15,6 @@
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
 #include <CGAL/Nonobtuse_remeshing/quality_report.h>
 #include <CGAL/Nonobtuse_remeshing/mesh_io.h>
+#include <CGAL/Nonobtuse_remeshing/nonobtuse_marching_cubes.h>
 
 #endif // CGAL_NONOBTUSE_REMESHING_H

@@ -24,7 +24,9 @@ namespace internal_np {
   X(hausdorff_relative_error_t,                                                 \
     hausdorff_relative_error)             /* Hausdorff error, fraction of diag*/\
   X(maximum_self_intersections_t,                                               \
-    maximum_self_intersections)           /* cap on reported face pairs */
+    maximum_self_intersections)           /* cap on reported face pairs */      \
+  X(resolution_t, resolution)             /* cubes along the longest side */    \
+  X(sign_source_t, sign_source)           /* Marching Cubes corner signs */
 
 #define CGAL_NONOBTUSE_DECLARE_TAG(TAG, NAME) enum TAG { NAME };
 CGAL_NONOBTUSE_TAGS(CGAL_NONOBTUSE_DECLARE_TAG)

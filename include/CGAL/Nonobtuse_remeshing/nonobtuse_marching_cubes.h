@@ -1,0 +1,247 @@
+// The initial mesh: nonobtuse Marching Cubes, patch-based so that open and
+// self-intersecting inputs work (thesis, chapter 4).
+
+#ifndef CGAL_NONOBTUSE_REMESHING_NONOBTUSE_MARCHING_CUBES_H
+#define CGAL_NONOBTUSE_REMESHING_NONOBTUSE_MARCHING_CUBES_H
+
+#include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
+#include <CGAL/Nonobtuse_remeshing/internal/grid.h>
+#include <CGAL/Nonobtuse_remeshing/internal/marching_cubes_table.h>
+#include <CGAL/Nonobtuse_remeshing/internal/mesh_cube_intersection.h>
+#include <CGAL/Nonobtuse_remeshing/internal/patches_and_signs.h>
+#include <CGAL/Nonobtuse_remeshing/internal/stitching.h>
+#include <CGAL/Nonobtuse_remeshing/parameters.h>
+
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <chrono>
+#include <numeric>
+#include <stdexcept>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Nonobtuse_remeshing {
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Where the corner signs of the Marching Cubes come from.
+enum class Sign_source
+{
+  /// per cube and per patch of input triangles, from the orientation of the
+  /// patch (thesis, section 4.2.2); works for open inputs
+  patches,
+  /// one sign per grid corner from an exact inside/outside test; closed inputs only
+  inside_test
+};
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Result of `nonobtuse_marching_cubes()`: the statistics of the thesis's
+/// Table 4.1, and the correspondence between output faces and input patches.
+struct Marching_cubes_result
+{
+  int resolution = 0;
+  double cube_size = 0.;
+  std::size_t input_triangles = 0;
+  std::size_t degenerate_input_triangles = 0;  ///< ignored: they have no orientation
+  std::size_t cubes_intersected = 0;
+  std::size_t cubes_with_several_patches = 0;
+  std::size_t patches = 0;
+  std::size_t patches_ignored = 0;             ///< sign conflicts
+  std::size_t faces_stitched = 0;              ///< grid faces where stitching acted
+  std::size_t welds_refused = 0;               ///< midpoint copies kept apart
+  std::size_t non_manifold_faces_removed = 0;  ///< defects removed, never left
+  std::size_t islands_removed = 0;             ///< pieces cut off their input component
+  std::size_t vertices_out = 0, triangles_out = 0, borders_out = 0, components_out = 0;
+  std::size_t min_valence = 0, max_valence = 0;
+  double min_angle = 0., max_angle = 0.;
+  double seconds = 0.;
+  /// input face indices (in the order of `faces(input)`) of each patch
+  std::vector<std::vector<std::size_t> > patch_faces;
+  /// for each output face (in the order of `faces(output)`), its patch
+  std::vector<std::size_t> face_patch;
+};
+
+namespace internal {
+
+template <typename TriangleMesh>
+Input_triangles input_triangles(const TriangleMesh& mesh)
+{
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  std::unordered_map<face_descriptor, std::size_t> index;
+  std::size_t i = 0;
+  for(face_descriptor f : faces(mesh)) index[f] = i++;
+  Input_triangles input;
+  for(face_descriptor f : faces(mesh)) {
+    const auto h = halfedge(f, mesh);
+    input.triangles.emplace_back(get(vpm, source(h, mesh)), get(vpm, target(h, mesh)),
+                                 get(vpm, target(next(h, mesh), mesh)));
+    std::array<std::size_t, 3> neighbours;
+    auto g = h;
+    for(int k = 0; k < 3; ++k, g = next(g, mesh)) {
+      const auto o = opposite(g, mesh);
+      neighbours[k] = is_border(o, mesh) ? Input_triangles::none : index.at(face(o, mesh));
+    }
+    input.neighbours.push_back(neighbours);
+  }
+  return input;
+}
+
+// Edge-connected component of each input triangle.
+inline std::vector<std::size_t> input_components(const Input_triangles& input)
+{
+  std::vector<std::size_t> root(input.triangles.size());
+  std::iota(root.begin(), root.end(), 0);
+  auto find = [&](std::size_t x) {
+    while(root[x] != x) x = root[x] = root[root[x]];
+    return x;
+  };
+  for(std::size_t t = 0; t < root.size(); ++t)
+    for(std::size_t n : input.neighbours[t])
+      if(n != Input_triangles::none) root[find(t)] = find(n);
+  for(std::size_t t = 0; t < root.size(); ++t) root[t] = find(t);
+  return root;
+}
+
+// One patch per cube, signed by an exact inside test at the grid corners.
+template <typename TriangleMesh>
+std::vector<Patch> inside_test_patches(const TriangleMesh& mesh, const Grid& grid, const Cube_triangles& cubes)
+{
+  const Side_of_triangle_mesh<TriangleMesh, Epick> side(mesh);
+  std::unordered_map<std::int64_t, bool> inside;
+  std::vector<Patch> patches;
+  for(std::size_t c = 0; c < cubes.size(); ++c) {
+    Patch patch;
+    patch.cube = cubes.cube_ids[c];
+    patch.triangles.assign(cubes.triangles.begin() + cubes.first[c], cubes.triangles.begin() + cubes.first[c + 1]);
+    const std::array<int, 3> cube = grid.cube_index(patch.cube);
+    for(int corner = 0; corner < 8; ++corner) {
+      const int i = cube[0] + marching_cubes::corner_bit(corner, 0), j = cube[1] + marching_cubes::corner_bit(corner, 1),
+                k = cube[2] + marching_cubes::corner_bit(corner, 2);
+      auto found = inside.find(grid.corner_id(i, j, k));
+      if(found == inside.end())
+        found = inside.emplace(grid.corner_id(i, j, k),
+                               side(signs::corner_point(grid, cube, corner)) != ON_UNBOUNDED_SIDE).first;
+      if(found->second) patch.config |= 1u << corner;
+    }
+    patch.state = (patch.config != 0 && patch.config != 255) ? Patch::triangulated : Patch::black;
+    patches.push_back(std::move(patch));
+  }
+  return patches;
+}
+
+} // namespace internal
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Builds the initial nonobtuse mesh of `input` into `output` (cleared first):
+/// the nonobtuse Marching Cubes of the thesis's chapter 4 on a grid of
+/// `resolution` cubes along the longest side of the input's bounding box.
+/// Output vertices lie at cube-edge midpoints and cube centres, exactly, so
+/// every angle lies in [35.26, 90] degrees exactly; the output is a manifold
+/// triangle mesh oriented like the input.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{resolution} cubes along the longest side (default 100) \cgalParamNEnd
+///   \cgalParamNBegin{sign_source} `Sign_source::patches` (default) or
+///     `Sign_source::inside_test` (closed inputs only) \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// Throws std::invalid_argument for a bad resolution, a flat input, or an
+/// inside test asked on an open input.
+template <typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, TriangleMesh& output,
+                                               const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  namespace PMP = Polygon_mesh_processing;
+  const auto start = std::chrono::steady_clock::now();
+
+  Marching_cubes_result result;
+  result.resolution = choose_parameter(get_parameter(np, internal_np::resolution), 100);
+  const Sign_source source = choose_parameter(get_parameter(np, internal_np::sign_source), Sign_source::patches);
+  if(!is_triangle_mesh(input) || faces(input).size() == 0)
+    throw std::invalid_argument("nonobtuse_marching_cubes: the input must be a non-empty triangle mesh");
+  if(source == Sign_source::inside_test && !is_closed(input))
+    throw std::invalid_argument("the inside test needs a closed input");
+
+  const internal::Grid grid(PMP::bbox(input), result.resolution);
+  result.cube_size = grid.cube_size();
+  const internal::Input_triangles in = internal::input_triangles(input);
+  result.input_triangles = in.triangles.size();
+  std::vector<bool> usable(in.triangles.size());
+  for(std::size_t t = 0; t < in.triangles.size(); ++t) {
+    usable[t] = !in.triangles[t].is_degenerate();
+    result.degenerate_input_triangles += !usable[t];
+  }
+
+  // Phase 1: cubes and their triangles.
+  const internal::Cube_triangles cubes = internal::mesh_cube_intersection(grid, in.triangles, usable);
+  result.cubes_intersected = cubes.size();
+
+  // Phase 2: patches and signs.
+  const std::vector<internal::Patch> patches = source == Sign_source::patches
+                                                   ? internal::patches_and_signs(grid, cubes, in)
+                                                   : internal::inside_test_patches(input, grid, cubes);
+  result.patches = patches.size();
+  for(std::size_t p = 0; p < patches.size(); ++p) {
+    result.patches_ignored += (patches[p].state == internal::Patch::ignored);
+    if(p > 0 && patches[p].cube == patches[p - 1].cube && (p < 2 || patches[p - 2].cube != patches[p].cube))
+      ++result.cubes_with_several_patches;
+  }
+
+  // Phase 3: welding, stitching, clean-up.
+  internal::Stitcher stitcher(grid, cubes.cube_ids, patches, internal::input_components(in));
+  const internal::Marching_cubes_soup soup = stitcher.run();
+  result.faces_stitched = soup.faces_stitched;
+  result.welds_refused = soup.welds_refused;
+  result.non_manifold_faces_removed = soup.removed_non_manifold;
+  result.islands_removed = soup.islands_removed;
+
+  using Point = typename boost::property_traits<
+      typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type;
+  std::vector<Point> points;
+  for(const auto& p : soup.positions)
+    points.emplace_back(grid.coordinate(0, p[0]), grid.coordinate(1, p[1]), grid.coordinate(2, p[2]));
+  std::vector<std::array<std::size_t, 3> > triangles = soup.triangles;
+  if(!PMP::is_polygon_soup_a_polygon_mesh(triangles))
+    throw std::logic_error("nonobtuse_marching_cubes: the stitched soup is not a polygon mesh");
+  clear(output);
+  PMP::polygon_soup_to_polygon_mesh(points, triangles, output);
+
+  // Statistics (Table 4.1) and the face-to-patch correspondence.
+  for(const auto& patch : patches) result.patch_faces.push_back(patch.triangles);
+  result.face_patch = soup.triangle_patch;
+  result.vertices_out = num_vertices(output);
+  result.triangles_out = num_faces(output);
+  std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor> borders;
+  PMP::extract_boundary_cycles(output, std::back_inserter(borders));
+  result.borders_out = borders.size();
+  std::unordered_map<typename boost::graph_traits<TriangleMesh>::face_descriptor, std::size_t> component;
+  result.components_out = result.triangles_out == 0 ? 0
+      : PMP::connected_components(output, boost::make_assoc_property_map(component));
+  result.min_valence = std::size_t(-1);
+  for(auto v : vertices(output)) {
+    result.min_valence = (std::min)(result.min_valence, std::size_t(degree(v, output)));
+    result.max_valence = (std::max)(result.max_valence, std::size_t(degree(v, output)));
+  }
+  if(result.vertices_out == 0) result.min_valence = 0;
+  const auto certificate = certify_angle_bounds(output, parameters::min_angle(35.26));
+  if(result.triangles_out > 0 && !certificate.is_certified())
+    throw std::logic_error("nonobtuse_marching_cubes: an output angle is outside [35.26, 90]");
+  result.min_angle = certificate.min_angle;
+  result.max_angle = certificate.max_angle;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+} // namespace Nonobtuse_remeshing
+} // namespace CGAL
+
+#endif // CGAL_NONOBTUSE_REMESHING_NONOBTUSE_MARCHING_CUBES_H
