@@ -51,6 +51,7 @@ int run_guarded(const std::string& name, const std::function<int()>& body);
 
 int certify_command(int argc, char** argv);
 int report_command(int argc, char** argv);
+int remesh_command(int argc, char** argv);
 
 } // namespace nonobtuse_cli
 

@@ -19,6 +19,8 @@ struct Command
 const Command commands[] = {
   {"certify", &nonobtuse_cli::certify_command,
    "decide exactly whether every angle of a mesh lies within the bounds"},
+  {"remesh", &nonobtuse_cli::remesh_command,
+   "remesh a surface into a certified well-shaped nonobtuse mesh"},
   {"report", &nonobtuse_cli::report_command,
    "quality report: angles, valences, topology, defects, distance to a reference"},
 };
