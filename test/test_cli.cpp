@@ -203,3 +203,43 @@ TEST(Cli, JsonReportAgreesWithTheLibrary)
   // nothing but the report was left in the folder (no temporary file)
   EXPECT_EQ(std::system(("test $(ls -A '" + folder + "' | wc -l) -eq 1").c_str()), 0);
 }
+
+TEST(Cli, RemeshWritesACertifiedMesh)
+{
+  const std::string folder = scratch();
+  const std::string out = folder + "/sphere-init.off", json = folder + "/init.json";
+  const Outcome r = run("remesh " + data("sphere.off") + " -o " + out + " --resolution 30 --stop-after init --json " + json);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("certified in [30, 90] degrees on the written file"), std::string::npos);
+  Mesh mesh;
+  NR::Read_log log;
+  NR::read_triangle_mesh(out, mesh, log);
+  EXPECT_TRUE(log.repairs.empty());
+  const auto certificate = NR::certify_angle_bounds(mesh, NR::parameters::min_angle(35.26));
+  EXPECT_TRUE(certificate.is_certified());
+  const auto j = nlohmann::json::parse(slurp(json));
+  EXPECT_EQ(j["init"]["resolution"], 30);
+  EXPECT_EQ(j["init"]["triangles_out"], num_faces(mesh));
+  EXPECT_EQ(j["init"]["borders_out"], 0);
+  EXPECT_EQ(j["output_report"]["certification"]["certified"], true);
+  EXPECT_LT(j["output_report"]["distance_to_reference"]["hausdorff_symmetric"].get<double>(), 5.);
+  // only the two outputs are in the folder
+  EXPECT_EQ(std::system(("test $(ls -A '" + folder + "' | wc -l) -eq 2").c_str()), 0);
+}
+
+TEST(Cli, RemeshRefusesBadRequestsWithoutWriting)
+{
+  const std::string folder = scratch();
+  const std::string out = folder + "/out.off";
+  EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + out + " --stop-after fit").code, 2);
+  EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + out + " --resolution 0").code, 2);
+  EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + out + " --signs magic").code, 2);
+  EXPECT_EQ(run("remesh " + data("sphere.off")).code, 2);  // no output
+  const Outcome open = run("remesh " + data("pig.off") + " -o " + out + " --signs inside-test");
+  EXPECT_EQ(open.code, 3);
+  EXPECT_NE(open.err.find("closed input"), std::string::npos);
+  EXPECT_EQ(run("remesh " + folder + "/absent.off -o " + out).code, 3);
+  EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + folder + "/missing/out.off").code, 3);
+  EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + folder + "/out.xyz").code, 3);
+  EXPECT_EQ(std::system(("test -z \"$(ls -A '" + folder + "')\"").c_str()), 0) << "nothing written";
+}

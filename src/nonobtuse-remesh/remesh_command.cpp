@@ -98,6 +98,8 @@ int remesh_command(int argc, char** argv)
     if(resolution < 1 || resolution > 4096)
       throw std::invalid_argument("--resolution must be between 1 and 4096");
     check_output_path(output_path, {input_path});
+    if(!NR::internal::is_mesh_extension(NR::internal::file_extension(output_path)))
+      throw NR::Output_error("cannot write '" + output_path + "': unsupported extension (expected .off, .obj, .ply or .stl)");
     if(!json_path.empty()) check_output_path(json_path, {input_path, output_path});
 
     const Mesh input = load_mesh(input_path);

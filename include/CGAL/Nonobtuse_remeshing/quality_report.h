@@ -28,6 +28,7 @@
 #include <cstddef>
 #include <limits>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <unordered_map>
 #include <vector>
@@ -218,8 +219,14 @@ Quality_report quality_report(const TriangleMesh& mesh,
   r.max_angle = certificate.max_angle;
   r.angle_histogram = certificate.angle_histogram;
 
+  // one halfedge per umbrella of each non-manifold vertex (linear time;
+  // is_non_manifold_vertex() would be linear per vertex)
+  std::vector<halfedge_descriptor> umbrellas;
+  PMP::non_manifold_vertices(mesh, std::back_inserter(umbrellas));
+  std::set<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> pinched;
+  for(halfedge_descriptor h : umbrellas) pinched.insert(target(h, mesh));
+  r.non_manifold_vertices = pinched.size();
   for(auto v : vertices(mesh)) {
-    if(PMP::is_non_manifold_vertex(v, mesh)) ++r.non_manifold_vertices;
     const std::size_t valence = degree(v, mesh);
     if(is_border(v, mesh)) ++r.boundary_valences[valence];
     else ++r.interior_valences[valence];

@@ -205,6 +205,35 @@ inline void polygon_triangulations(const std::vector<int>& cycle, int i, int j,
   }
 }
 
+// Side of the surface at each crossed edge of the cycle: the sign of the
+// normal (summed over the triangles at the edge's midpoint) along the
+// direction from the edge's inside corner to its outside corner. A
+// triangulation that folds over has both signs; a good one has one sign,
+// and is flipped if that sign is negative.
+inline int orientation_along_crossings(unsigned config, const std::vector<int>& cycle,
+                                       const std::vector<std::array<int, 3> >& triangles)
+{
+  int positive = 0, negative = 0;
+  for(int slot : cycle) {
+    Vec normal = {0, 0, 0};
+    for(const auto& t : triangles)
+      if(std::count(t.begin(), t.end(), slot)) {
+        const Vec n = cross(sub(slot_position(t[1]), slot_position(t[0])),
+                            sub(slot_position(t[2]), slot_position(t[0])));
+        for(int a = 0; a < 3; ++a) normal[a] += n[a];
+      }
+    const std::array<int, 2> c = edge_corners(slot);
+    const int from = inside(config, c[0]) ? c[0] : c[1];
+    const int to = from == c[0] ? c[1] : c[0];
+    const std::array<int, 3> pf = {2 * corner_bit(from, 0), 2 * corner_bit(from, 1), 2 * corner_bit(from, 2)};
+    const std::array<int, 3> pt = {2 * corner_bit(to, 0), 2 * corner_bit(to, 1), 2 * corner_bit(to, 2)};
+    const long side = dot(normal, sub(pt, pf));
+    positive += side > 0;
+    negative += side <= 0;
+  }
+  return negative == 0 ? 1 : (positive == 0 ? -1 : 0);
+}
+
 // Key that makes the choice among equally good triangulations depend on the
 // directions of their diagonals only, so that congruent configurations in
 // different cubes are triangulated alike (a flat sheet then gets parallel
@@ -236,9 +265,10 @@ inline std::vector<Vec> diagonal_directions(const std::vector<int>& cycle,
 }
 
 // Chooses the triangulation of one contour cycle: without the centre when a
-// well-shaped one exists (the direction key breaks ties), otherwise the fan
-// around the centre (the thesis's one-ring patch of cases 5, 9, 11, 12, 14).
-inline bool triangulate_cycle(const std::vector<int>& cycle, Cycle_triangulation& result)
+// well-shaped, unfolded one exists (the direction key breaks ties), otherwise
+// the fan around the centre (the thesis's one-ring patch of cases 5, 9, 11,
+// 12, 14). The result is oriented from inside to outside.
+inline bool triangulate_cycle(unsigned config, const std::vector<int>& cycle, Cycle_triangulation& result)
 {
   const int k = int(cycle.size());
   std::vector<std::vector<std::array<int, 3> > > candidates;
@@ -246,7 +276,7 @@ inline bool triangulate_cycle(const std::vector<int>& cycle, Cycle_triangulation
   bool found = false;
   std::vector<Vec> best_key;
   for(const auto& c : candidates) {
-    if(!embedded(c)) continue;
+    if(orientation_along_crossings(config, cycle, c) == 0 || !embedded(c)) continue;
     std::vector<Vec> key = diagonal_directions(cycle, c);
     if(!found || key < best_key) {
       result.triangles = c;
@@ -255,45 +285,20 @@ inline bool triangulate_cycle(const std::vector<int>& cycle, Cycle_triangulation
       found = true;
     }
   }
-  if(found) return true;
-  std::vector<std::array<int, 3> > fan;
-  for(int i = 0; i < k; ++i) {
-    const std::array<int, 3> t = {centre_slot, cycle[i], cycle[(i + 1) % k]};
-    if(!well_shaped(t)) return false;
-    fan.push_back(t);
+  if(!found) {
+    std::vector<std::array<int, 3> > fan;
+    for(int i = 0; i < k; ++i) {
+      const std::array<int, 3> t = {centre_slot, cycle[i], cycle[(i + 1) % k]};
+      if(!well_shaped(t)) return false;
+      fan.push_back(t);
+    }
+    if(orientation_along_crossings(config, cycle, fan) == 0 || !embedded(fan)) return false;
+    result.triangles = fan;
+    result.uses_centre = true;
   }
-  if(!embedded(fan)) return false;
-  result.triangles = fan;
-  result.uses_centre = true;
+  if(orientation_along_crossings(config, cycle, result.triangles) < 0)
+    for(auto& t : result.triangles) std::swap(t[1], t[2]);
   return true;
-}
-
-// Orients the triangles of one cycle (consistently ordered along the cycle)
-// so that the normal at a crossed edge points from its inside corner to its
-// outside one.
-inline void orient_cycle(unsigned config, const std::vector<int>& cycle,
-                         std::vector<std::array<int, 3> >& triangles)
-{
-  for(int slot : cycle) {
-    Vec normal = {0, 0, 0};
-    for(const auto& t : triangles)
-      if(std::count(t.begin(), t.end(), slot)) {
-        const Vec n = cross(sub(slot_position(t[1]), slot_position(t[0])),
-                            sub(slot_position(t[2]), slot_position(t[0])));
-        for(int a = 0; a < 3; ++a) normal[a] += n[a];
-      }
-    const std::array<int, 2> c = edge_corners(slot);
-    const int from = inside(config, c[0]) ? c[0] : c[1];
-    const int to = from == c[0] ? c[1] : c[0];
-    const std::array<int, 3> pf = {2 * corner_bit(from, 0), 2 * corner_bit(from, 1), 2 * corner_bit(from, 2)};
-    const std::array<int, 3> pt = {2 * corner_bit(to, 0), 2 * corner_bit(to, 1), 2 * corner_bit(to, 2)};
-    const long side = dot(normal, sub(pt, pf));
-    if(side == 0) continue;
-    if(side < 0)
-      for(auto& t : triangles) std::swap(t[1], t[2]);
-    return;
-  }
-  throw std::logic_error("nonobtuse marching cubes: cannot orient a contour cycle");
 }
 
 /// Contour cycles of a configuration: every crossed edge lies on exactly two
@@ -333,7 +338,7 @@ inline Entry generate_entry(unsigned config)
   bool centre_taken = false;
   for(const auto& cycle : cycles) {
     Cycle_triangulation t;
-    if(!triangulate_cycle(cycle, t))
+    if(!triangulate_cycle(config, cycle, t))
       throw std::logic_error("nonobtuse marching cubes: no well-shaped triangulation for configuration " +
                              std::to_string(config));
     if(t.uses_centre) {
@@ -342,7 +347,6 @@ inline Entry generate_entry(unsigned config)
                                std::to_string(config));
       centre_taken = true;
     }
-    orient_cycle(config, cycle, t.triangles);
     entry.triangles.insert(entry.triangles.end(), t.triangles.begin(), t.triangles.end());
   }
   if(!embedded(entry.triangles))

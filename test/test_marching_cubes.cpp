@@ -1,0 +1,368 @@
+// Nonobtuse Marching Cubes: the generated table checked exhaustively and
+// exactly, phase 1 against brute force, and whole meshes at several
+// resolutions, certified on the re-read file.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/nonobtuse_remeshing.h>
+
+#include <boost/multiprecision/cpp_int.hpp>
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <numeric>
+#include <set>
+#include <string>
+#include <unistd.h>
+
+namespace NR = CGAL::Nonobtuse_remeshing;
+namespace MC = CGAL::Nonobtuse_remeshing::internal::marching_cubes;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+
+namespace {
+
+std::string data(const std::string& name) { return std::string(NONOBTUSE_TEST_DATA) + "/" + name; }
+
+Mesh load(const std::string& name)
+{
+  Mesh mesh;
+  NR::read_triangle_mesh(data(name), mesh);
+  return mesh;
+}
+
+std::array<long, 3> corner_position(int c) { return {2L * (c & 1), 2L * ((c >> 1) & 1), 2L * ((c >> 2) & 1)}; }
+
+std::array<long, 3> position(int slot)
+{
+  const std::array<int, 3> p = MC::slot_position(slot);
+  return {p[0], p[1], p[2]};
+}
+
+std::array<long, 3> minus(const std::array<long, 3>& a, const std::array<long, 3>& b)
+{
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+
+long dot(const std::array<long, 3>& a, const std::array<long, 3>& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// The edge between corners a and b, found geometrically (not with the
+// table's numbering helpers): the slot whose position is their midpoint.
+int slot_between(int a, int b)
+{
+  const std::array<long, 3> pa = corner_position(a), pb = corner_position(b);
+  for(int s = 0; s < 12; ++s)
+    if(position(s) == std::array<long, 3>{(pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2, (pa[2] + pb[2]) / 2})
+      return s;
+  return -1;
+}
+
+// Reports that stop at the first self-intersection: double sheets at thin
+// features make a full count slow, and these tests do not need it.
+auto one_self_intersection() { return NR::parameters::maximum_self_intersections(std::size_t(1)); }
+
+} // namespace
+
+// Every configuration: angles in [acos(sqrt(2/3)), 90] exactly; vertices
+// only at midpoints of crossed edges and at the centre; a manifold patch
+// whose border is exactly the face contours (ambiguous faces cut off their
+// outside corners); normals from inside to outside.
+TEST(MarchingCubesTable, AllConfigurationsExhaustively)
+{
+  const auto& table = MC::table();
+  std::size_t with_centre = 0;
+  for(unsigned config = 0; config < 256; ++config) {
+    SCOPED_TRACE("configuration " + std::to_string(config));
+    const auto& triangles = table[config].triangles;
+    auto inside = [&](int c) { return ((config >> c) & 1u) != 0; };
+    std::set<int> crossed;
+    for(int a = 0; a < 8; ++a)
+      for(int axis = 0; axis < 3; ++axis) {
+        const int b = a ^ (1 << axis);
+        if(a < b && inside(a) != inside(b)) crossed.insert(slot_between(a, b));
+      }
+    EXPECT_EQ(triangles.empty(), crossed.empty());
+
+    // angles, exactly (integers)
+    for(const auto& t : triangles)
+      for(int i = 0; i < 3; ++i) {
+        const auto u = minus(position(t[(i + 1) % 3]), position(t[i]));
+        const auto v = minus(position(t[(i + 2) % 3]), position(t[i]));
+        const long d = dot(u, v), l = dot(u, u) * dot(v, v);
+        EXPECT_GE(d, 0) << "obtuse";
+        EXPECT_LE(3 * d * d, 2 * l) << "below 35.26 degrees";
+        EXPECT_GT(l, 0);
+      }
+
+    // vertices, edges, fans
+    std::set<int> used;
+    std::map<std::pair<int, int>, int> directed;
+    for(const auto& t : triangles)
+      for(int i = 0; i < 3; ++i) {
+        used.insert(t[i]);
+        ++directed[{t[i], t[(i + 1) % 3]}];
+      }
+    for(int s : used) EXPECT_TRUE(s == MC::centre_slot || crossed.count(s)) << "slot " << s;
+    for(int s : crossed) EXPECT_TRUE(used.count(s)) << "crossed edge without vertex " << s;
+    with_centre += used.count(MC::centre_slot);
+    std::map<std::pair<int, int>, int> border;  // directed border edges
+    for(const auto& e : directed) {
+      EXPECT_EQ(e.second, 1) << "edge used twice in one direction";
+      if(!directed.count({e.first.second, e.first.first})) border[e.first] = 1;
+    }
+    for(int s : used) {
+      std::vector<std::size_t> around;
+      for(std::size_t f = 0; f < triangles.size(); ++f)
+        if(std::count(triangles[f].begin(), triangles[f].end(), s)) around.push_back(f);
+      std::vector<std::size_t> root(around.size());
+      std::iota(root.begin(), root.end(), 0);
+      std::function<std::size_t(std::size_t)> find = [&](std::size_t x) { return root[x] == x ? x : root[x] = find(root[x]); };
+      for(std::size_t i = 0; i < around.size(); ++i)
+        for(std::size_t j = i + 1; j < around.size(); ++j) {
+          int shared = 0;
+          for(int a : triangles[around[i]]) shared += std::count(triangles[around[j]].begin(), triangles[around[j]].end(), a);
+          if(shared == 2) root[find(i)] = find(j);
+        }
+      std::set<std::size_t> fans;
+      for(std::size_t i = 0; i < around.size(); ++i) fans.insert(find(i));
+      EXPECT_EQ(fans.size(), 1u) << "non-manifold at slot " << s;
+    }
+
+    // the border is the union of the face contours
+    std::set<std::pair<int, int> > expected;
+    for(int face = 0; face < 6; ++face) {
+      const int axis = face / 2, side = face % 2;
+      std::vector<int> q;  // the face's corners in cyclic order, found geometrically
+      for(int c = 0; c < 8; ++c)
+        if(((c >> axis) & 1) == side) q.push_back(c);
+      std::swap(q[2], q[3]);  // (00, 10, 01, 11) -> (00, 10, 11, 01)
+      std::vector<int> cut;
+      for(int i = 0; i < 4; ++i)
+        if(inside(q[i]) != inside(q[(i + 1) % 4])) cut.push_back(i);
+      auto edge = [&](int i) { return slot_between(q[i % 4], q[(i + 1) % 4]); };
+      if(cut.size() == 2) {
+        expected.insert({std::min(edge(cut[0]), edge(cut[1])), std::max(edge(cut[0]), edge(cut[1]))});
+      } else if(cut.size() == 4) {  // ambiguous: each outside corner is cut off
+        for(int i = 0; i < 4; ++i)
+          if(!inside(q[i]))
+            expected.insert({std::min(edge(i + 3), edge(i)), std::max(edge(i + 3), edge(i))});
+      }
+    }
+    std::set<std::pair<int, int> > actual;
+    for(const auto& e : border) actual.insert({std::min(e.first.first, e.first.second), std::max(e.first.first, e.first.second)});
+    EXPECT_EQ(actual, expected);
+
+    // orientation: around each crossed edge's midpoint the normal points
+    // from the inside corner to the outside one
+    for(int s : crossed) {
+      std::array<long, 3> normal = {0, 0, 0};
+      for(const auto& t : triangles)
+        if(std::count(t.begin(), t.end(), s)) {
+          const auto u = minus(position(t[1]), position(t[0])), v = minus(position(t[2]), position(t[0]));
+          normal[0] += u[1] * v[2] - u[2] * v[1];
+          normal[1] += u[2] * v[0] - u[0] * v[2];
+          normal[2] += u[0] * v[1] - u[1] * v[0];
+        }
+      int a = -1, b = -1;
+      for(int c = 0; c < 8 && a < 0; ++c)
+        for(int axis = 0; axis < 3; ++axis)
+          if(slot_between(c, c ^ (1 << axis)) == s) { a = c; b = c ^ (1 << axis); break; }
+      const int from = inside(a) ? a : b, to = inside(a) ? b : a;
+      EXPECT_GT(dot(normal, minus(corner_position(to), corner_position(from))), 0) << "slot " << s;
+    }
+  }
+  // the thesis's centre cases exist, and the centre is not used everywhere
+  EXPECT_GT(with_centre, 0u);
+  EXPECT_LT(with_centre, 254u);
+}
+
+TEST(MarchingCubesTable, FlatSheetsGetValenceSix)
+{
+  // A plane z = const cuts every cube through its vertical edges (case 8, a
+  // square): the same diagonal everywhere gives valence 6, not 4 and 8.
+  Mesh plane;
+  const double s = 1.;
+  std::vector<Mesh::Vertex_index> v;
+  for(int j = 0; j <= 1; ++j)
+    for(int i = 0; i <= 1; ++i) v.push_back(plane.add_vertex(Point(i * s, j * s, 0.3)));
+  plane.add_face(v[0], v[1], v[3]);
+  plane.add_face(v[0], v[3], v[2]);
+  Mesh out;
+  NR::nonobtuse_marching_cubes(plane, out, NR::parameters::resolution(12));
+  const NR::Quality_report r = NR::quality_report(out);
+  ASSERT_FALSE(r.interior_valences.empty());
+  EXPECT_EQ(r.interior_valences.size(), 1u);
+  EXPECT_EQ(r.interior_valences.begin()->first, 6u);
+}
+
+// Phase 1 against testing every cube of the grid.
+TEST(MarchingCubes, MeshCubeIntersectionMatchesBruteForce)
+{
+  for(const std::string name : {"sphere.off", "pig.off"})
+    for(int resolution : {7, 16}) {
+      const Mesh mesh = load(name);
+      const NR::internal::Grid grid(CGAL::Polygon_mesh_processing::bbox(mesh), resolution);
+      const NR::internal::Input_triangles in = NR::internal::input_triangles(mesh);
+      const std::vector<bool> usable(in.triangles.size(), true);
+      const NR::internal::Cube_triangles cubes = NR::internal::mesh_cube_intersection(grid, in.triangles, usable);
+      std::set<std::pair<std::int64_t, std::size_t> > fast, brute;
+      for(std::size_t c = 0; c < cubes.size(); ++c)
+        for(std::size_t i = cubes.first[c]; i < cubes.first[c + 1]; ++i) fast.insert({cubes.cube_ids[c], cubes.triangles[i]});
+      for(std::size_t t = 0; t < in.triangles.size(); ++t)
+        for(int k = 0; k < grid.cubes(2); ++k)
+          for(int j = 0; j < grid.cubes(1); ++j)
+            for(int i = 0; i < grid.cubes(0); ++i)
+              if(CGAL::do_intersect(in.triangles[t], grid.cube_box(i, j, k))) brute.insert({grid.cube_id(i, j, k), t});
+      EXPECT_EQ(fast, brute) << name << " at " << resolution;
+      EXPECT_FALSE(fast.empty());
+    }
+}
+
+TEST(MarchingCubes, GridCoordinatesAreExact)
+{
+  const Mesh mesh = load("pig.off");
+  const NR::internal::Grid grid(CGAL::Polygon_mesh_processing::bbox(mesh), 100);
+  Mesh out;
+  NR::nonobtuse_marching_cubes(mesh, out, NR::parameters::resolution(100));
+  const double half = grid.cube_size() / 2;
+  for(auto v : out.vertices())
+    for(int a = 0; a < 3; ++a) {
+      const double steps = (out.point(v)[a] - grid.origin(a)) / half;
+      ASSERT_EQ(steps, std::round(steps));
+      ASSERT_EQ(grid.coordinate(a, std::int64_t(steps)), out.point(v)[a]);
+    }
+  // about N cubes along the longest side
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
+  const double longest = std::max({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
+  EXPECT_GT(longest / grid.cube_size(), 99.);
+  EXPECT_LE(longest / grid.cube_size(), 100.);
+}
+
+// Every sample mesh at N = 10, 40, 70, 100: a manifold mesh, certified in
+// [35.26, 90] on the file written and re-read; closed inputs closed with
+// their Euler characteristic at N >= 40; open ones keep their borders at 100.
+class MarchingCubesOnMesh : public ::testing::TestWithParam<std::tuple<std::string, int>> {};
+
+TEST_P(MarchingCubesOnMesh, ManifoldCertifiedAndFaithful)
+{
+  const std::string name = std::get<0>(GetParam());
+  const int resolution = std::get<1>(GetParam());
+  const Mesh input = load(name);
+  const NR::Quality_report in = NR::quality_report(input, nullptr, one_self_intersection());
+  Mesh out;
+  const NR::Marching_cubes_result r = NR::nonobtuse_marching_cubes(input, out, NR::parameters::resolution(resolution));
+  ASSERT_GT(num_faces(out), 0u);
+  EXPECT_EQ(r.face_patch.size(), num_faces(out));
+
+  const std::string path = ::testing::TempDir() + "nonobtuse_mc_" + std::to_string(::getpid()) + ".off";
+  NR::write_mesh_atomically(path, out);
+  Mesh back;
+  NR::Read_log log;
+  NR::read_triangle_mesh(path, back, log);
+  std::remove(path.c_str());
+  EXPECT_TRUE(log.repairs.empty()) << "the written file is a valid mesh as it is";
+  ASSERT_EQ(num_faces(back), num_faces(out));
+
+  const auto strict = NR::certify_angle_bounds(back, NR::parameters::min_angle(35.26));
+  EXPECT_TRUE(strict.is_certified()) << strict.offending_faces.size() << " faces out of [35.26, 90]";
+  EXPECT_GE(strict.min_angle, 35.26);
+  EXPECT_TRUE(NR::certify_angle_bounds(back).is_certified());
+  const NR::Quality_report q = NR::quality_report(back, nullptr, one_self_intersection());
+  EXPECT_EQ(q.non_manifold_vertices, 0u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(back));
+  EXPECT_EQ(q.border_cycles, r.borders_out);
+  EXPECT_EQ(q.connected_components, in.connected_components) << "components";
+  if(in.border_cycles == 0 && resolution >= 40)
+    EXPECT_EQ(q.border_cycles, 0u) << "a closed input gives a closed output";
+  // The topology holds once the grid resolves the handles: at N = 40 one of
+  // the elephant's handles is narrower than two cubes and closes.
+  if(in.border_cycles == 0 && resolution >= 70)
+    EXPECT_EQ(q.euler_characteristic, in.euler_characteristic);
+  if(in.border_cycles > 0 && resolution == 100 && in.self_intersections == 0)
+    EXPECT_EQ(q.border_cycles, in.border_cycles);
+  // every output face lies in (or on) the cube of its patch
+  const NR::internal::Grid grid(CGAL::Polygon_mesh_processing::bbox(input), resolution);
+  const auto in_faces = input.faces();
+  const std::vector<Mesh::Face_index> all(in_faces.begin(), in_faces.end());
+  std::size_t f = 0;
+  for(auto face : out.faces()) {
+    ASSERT_LT(r.face_patch[f], r.patch_faces.size());
+    const auto& patch = r.patch_faces[r.face_patch[f]];
+    ASSERT_FALSE(patch.empty());
+    Point c = CGAL::centroid(out.point(out.source(out.halfedge(face))), out.point(out.target(out.halfedge(face))),
+                             out.point(out.target(out.next(out.halfedge(face)))));
+    // the patch's input triangles pass within a cube diagonal of the face
+    double nearest = 1e300;
+    for(std::size_t t : patch) {
+      const auto h = input.halfedge(all[t]);
+      const Kernel::Triangle_3 tri(input.point(input.source(h)), input.point(input.target(h)),
+                                   input.point(input.target(input.next(h))));
+      nearest = std::min(nearest, CGAL::squared_distance(c, tri));
+    }
+    EXPECT_LE(std::sqrt(nearest), 2 * grid.cube_size());
+    ++f;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(SampleMeshes, MarchingCubesOnMesh,
+                         ::testing::Combine(::testing::Values("sphere.off", "cube-meshed.off", "rotor.off", "elephant.off",
+                                                              "pig.off", "nefertiti.off", "mesh_with_border.off"),
+                                            ::testing::Values(10, 40, 70, 100)),
+                         [](const auto& info) {
+                           std::string name = std::get<0>(info.param);
+                           name = name.substr(0, name.find('.'));
+                           for(char& ch : name) if(ch == '-') ch = '_';
+                           return name + "_" + std::to_string(std::get<1>(info.param));
+                         });
+
+TEST(MarchingCubes, SeveralComponentsAreKept)
+{
+  Mesh two = load("sphere.off");
+  const Mesh copy = two;
+  std::map<Mesh::Vertex_index, Mesh::Vertex_index> to_new;
+  for(auto v : copy.vertices()) to_new[v] = two.add_vertex(copy.point(v) + Kernel::Vector_3(3, 0.5, 0));
+  for(auto f : copy.faces()) {
+    std::vector<Mesh::Vertex_index> corners;
+    for(auto v : copy.vertices_around_face(copy.halfedge(f))) corners.push_back(to_new[v]);
+    two.add_face(corners);
+  }
+  for(auto source : {NR::Sign_source::patches, NR::Sign_source::inside_test}) {
+    Mesh out;
+    const auto r = NR::nonobtuse_marching_cubes(
+        two, out, NR::parameters::combine(NR::parameters::resolution(60), NR::parameters::sign_source(source)));
+    EXPECT_EQ(r.components_out, 2u);
+    EXPECT_EQ(r.borders_out, 0u);
+    const NR::Quality_report q = NR::quality_report(out, nullptr, one_self_intersection());
+    EXPECT_EQ(q.euler_characteristic, 4);
+    EXPECT_TRUE(q.certified);
+  }
+}
+
+TEST(MarchingCubes, InsideTestAndPatchesAgreeOnClosedInputs)
+{
+  // rotor.off is left out: its blades are thinner than a cube, so a global
+  // inside test cannot keep its topology (the patches keep it, as double
+  // sheets that deform-to-fit later pulls apart).
+  for(const std::string name : {"sphere.off", "elephant.off", "cube-meshed.off"}) {
+    const Mesh input = load(name);
+    const long euler = NR::quality_report(input).euler_characteristic;
+    for(auto source : {NR::Sign_source::patches, NR::Sign_source::inside_test}) {
+      Mesh out;
+      NR::nonobtuse_marching_cubes(input, out, NR::parameters::combine(NR::parameters::resolution(70),
+                                                                       NR::parameters::sign_source(source)));
+      const NR::Quality_report q = NR::quality_report(out, nullptr, one_self_intersection());
+      EXPECT_TRUE(q.certified) << name;
+      EXPECT_EQ(q.non_manifold_vertices, 0u) << name;
+      EXPECT_EQ(q.border_cycles, 0u) << name;
+      EXPECT_EQ(q.euler_characteristic, euler) << name;
+    }
+  }
+  Mesh open = load("pig.off"), out;
+  EXPECT_THROW(NR::nonobtuse_marching_cubes(open, out, NR::parameters::sign_source(NR::Sign_source::inside_test)),
+               std::invalid_argument);
+}
