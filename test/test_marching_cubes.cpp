@@ -5,6 +5,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/nonobtuse_remeshing.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 
 #include <boost/multiprecision/cpp_int.hpp>
 
@@ -365,4 +367,21 @@ TEST(MarchingCubes, InsideTestAndPatchesAgreeOnClosedInputs)
   Mesh open = load("pig.off"), out;
   EXPECT_THROW(NR::nonobtuse_marching_cubes(open, out, NR::parameters::sign_source(NR::Sign_source::inside_test)),
                std::invalid_argument);
+}
+
+TEST(MarchingCubes, OrientedLikeTheInput)
+{
+  Mesh input = load("elephant.off");
+  for(bool flipped : {false, true}) {
+    if(flipped) CGAL::Polygon_mesh_processing::reverse_face_orientations(input);
+    const double input_volume = CGAL::Polygon_mesh_processing::volume(input);
+    for(auto source : {NR::Sign_source::patches, NR::Sign_source::inside_test}) {
+      Mesh out;
+      NR::nonobtuse_marching_cubes(input, out, NR::parameters::combine(NR::parameters::resolution(50),
+                                                                       NR::parameters::sign_source(source)));
+      const double volume = CGAL::Polygon_mesh_processing::volume(out);
+      EXPECT_GT(volume * input_volume, 0.) << (flipped ? "flipped input" : "input");
+      EXPECT_NEAR(volume / input_volume, 1., 0.1);
+    }
+  }
 }

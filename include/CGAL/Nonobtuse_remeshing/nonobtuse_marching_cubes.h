@@ -135,6 +135,39 @@ std::vector<Patch> inside_test_patches(const TriangleMesh& mesh, const Grid& gri
   return patches;
 }
 
+// The inside test ignores the input's orientation, so its triangles point
+// out of the solid. Each output component is flipped when the input
+// component it mostly comes from is oriented inwards (negative signed volume).
+inline void orient_like_input(const Input_triangles& input, const std::vector<std::size_t>& input_component,
+                              const std::vector<Patch>& patches, Marching_cubes_soup& soup)
+{
+  std::unordered_map<std::size_t, double> volume;  // six times the signed volume
+  for(std::size_t t = 0; t < input.triangles.size(); ++t) {
+    const Epick::Triangle_3& tri = input.triangles[t];
+    volume[input_component[t]] += CGAL::determinant(tri[0] - ORIGIN, tri[1] - ORIGIN, tri[2] - ORIGIN);
+  }
+  std::vector<std::size_t> root(soup.triangles.size());
+  std::iota(root.begin(), root.end(), 0);
+  auto find = [&](std::size_t x) {
+    while(root[x] != x) x = root[x] = root[root[x]];
+    return x;
+  };
+  std::unordered_map<std::uint64_t, std::size_t> owner;
+  for(std::size_t f = 0; f < soup.triangles.size(); ++f)
+    for(int i = 0; i < 3; ++i) {
+      const std::size_t u = soup.triangles[f][i], v = soup.triangles[f][(i + 1) % 3];
+      const auto inserted = owner.emplace((std::uint64_t((std::min)(u, v)) << 32) | (std::max)(u, v), f);
+      if(!inserted.second) root[find(f)] = find(inserted.first->second);
+    }
+  std::unordered_map<std::size_t, long> vote;
+  for(std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    const std::size_t t = patches[soup.triangle_patch[f]].triangles.front();
+    vote[find(f)] += volume[input_component[t]] < 0 ? -1 : 1;
+  }
+  for(std::size_t f = 0; f < soup.triangles.size(); ++f)
+    if(vote[find(f)] < 0) std::swap(soup.triangles[f][1], soup.triangles[f][2]);
+}
+
 } // namespace internal
 
 /// \ingroup PkgNonobtuseRemeshingRef
@@ -143,7 +176,8 @@ std::vector<Patch> inside_test_patches(const TriangleMesh& mesh, const Grid& gri
 /// `resolution` cubes along the longest side of the input's bounding box.
 /// Output vertices lie at cube-edge midpoints and cube centres, exactly, so
 /// every angle lies in [35.26, 90] degrees exactly; the output is a manifold
-/// triangle mesh oriented like the input.
+/// triangle mesh oriented like the input (with the inside test, each output
+/// component follows the orientation of the input component it comes from).
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{resolution} cubes along the longest side (default 100) \cgalParamNEnd
@@ -197,8 +231,11 @@ Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, Triang
   }
 
   // Phase 3: welding, stitching, clean-up.
-  internal::Stitcher stitcher(grid, cubes.cube_ids, patches, internal::input_components(in));
-  const internal::Marching_cubes_soup soup = stitcher.run();
+  const std::vector<std::size_t> input_component = internal::input_components(in);
+  internal::Stitcher stitcher(grid, cubes.cube_ids, patches, input_component);
+  internal::Marching_cubes_soup soup = stitcher.run();
+  if(source == Sign_source::inside_test)
+    internal::orient_like_input(in, input_component, patches, soup);
   result.faces_stitched = soup.faces_stitched;
   result.welds_refused = soup.welds_refused;
   result.non_manifold_faces_removed = soup.removed_non_manifold;
