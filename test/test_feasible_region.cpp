@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include <random>
 #include <string>
 
@@ -24,8 +26,8 @@ namespace {
 
 Mesh initial_mesh(const std::string& name, int resolution)
 {
-  Mesh input, output;
-  NR::read_triangle_mesh(std::string(NONOBTUSE_TEST_DATA) + "/" + name, input);
+  const Mesh input = nonobtuse_test::load(name);
+  Mesh output;
   NR::nonobtuse_marching_cubes(input, output, NR::parameters::resolution(resolution));
   return output;
 }

@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include <map>
 #include <numeric>
 #include <set>
@@ -26,14 +28,8 @@ using Mesh = CGAL::Surface_mesh<Point>;
 
 namespace {
 
-std::string data(const std::string& name) { return std::string(NONOBTUSE_TEST_DATA) + "/" + name; }
-
-Mesh load(const std::string& name)
-{
-  Mesh mesh;
-  NR::read_triangle_mesh(data(name), mesh);
-  return mesh;
-}
+using nonobtuse_test::data;
+using nonobtuse_test::load;
 
 std::array<long, 3> corner_position(int c) { return {2L * (c & 1), 2L * ((c >> 1) & 1), 2L * ((c >> 2) & 1)}; }
 

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include <cstdio>
 #include <dirent.h>
 #include <fstream>
@@ -26,14 +28,8 @@ using Mesh = CGAL::Surface_mesh<Point>;
 
 namespace {
 
-std::string data(const std::string& name) { return std::string(NONOBTUSE_TEST_DATA) + "/" + name; }
-
-Mesh load(const std::string& name)
-{
-  Mesh mesh;
-  NR::read_triangle_mesh(data(name), mesh);
-  return mesh;
-}
+using nonobtuse_test::data;
+using nonobtuse_test::load;
 
 // A fresh scratch folder per test.
 std::string scratch_folder(const std::string& test)

@@ -146,26 +146,14 @@ inline void orient_like_input(const Input_triangles& input, const std::vector<st
     const Epick::Triangle_3& tri = input.triangles[t];
     volume[input_component[t]] += CGAL::determinant(tri[0] - ORIGIN, tri[1] - ORIGIN, tri[2] - ORIGIN);
   }
-  std::vector<std::size_t> root(soup.triangles.size());
-  std::iota(root.begin(), root.end(), 0);
-  auto find = [&](std::size_t x) {
-    while(root[x] != x) x = root[x] = root[root[x]];
-    return x;
-  };
-  std::unordered_map<std::uint64_t, std::size_t> owner;
-  for(std::size_t f = 0; f < soup.triangles.size(); ++f)
-    for(int i = 0; i < 3; ++i) {
-      const std::size_t u = soup.triangles[f][i], v = soup.triangles[f][(i + 1) % 3];
-      const auto inserted = owner.emplace((std::uint64_t((std::min)(u, v)) << 32) | (std::max)(u, v), f);
-      if(!inserted.second) root[find(f)] = find(inserted.first->second);
-    }
+  const std::vector<std::size_t> root = edge_connected_components(soup.triangles);
   std::unordered_map<std::size_t, long> vote;
   for(std::size_t f = 0; f < soup.triangles.size(); ++f) {
     const std::size_t t = patches[soup.triangle_patch[f]].triangles.front();
-    vote[find(f)] += volume[input_component[t]] < 0 ? -1 : 1;
+    vote[root[f]] += volume[input_component[t]] < 0 ? -1 : 1;
   }
   for(std::size_t f = 0; f < soup.triangles.size(); ++f)
-    if(vote[find(f)] < 0) std::swap(soup.triangles[f][1], soup.triangles[f][2]);
+    if(vote[root[f]] < 0) std::swap(soup.triangles[f][1], soup.triangles[f][2]);
 }
 
 } // namespace internal

@@ -52,6 +52,27 @@ struct Marching_cubes_soup
   std::size_t islands_removed = 0;          // small pieces cut off the surface
 };
 
+/// Component of each triangle of a soup, triangles being joined through
+/// shared edges (either orientation): a representative triangle index each.
+inline std::vector<std::size_t> edge_connected_components(const std::vector<std::array<std::size_t, 3> >& triangles)
+{
+  std::vector<std::size_t> root(triangles.size());
+  std::iota(root.begin(), root.end(), 0);
+  auto find = [&](std::size_t x) {
+    while(root[x] != x) x = root[x] = root[root[x]];
+    return x;
+  };
+  std::unordered_map<std::uint64_t, std::size_t> owner;
+  for(std::size_t f = 0; f < triangles.size(); ++f)
+    for(int i = 0; i < 3; ++i) {
+      const std::size_t u = triangles[f][i], v = triangles[f][(i + 1) % 3];
+      const auto inserted = owner.emplace((std::uint64_t((std::min)(u, v)) << 32) | std::uint64_t((std::max)(u, v)), f);
+      if(!inserted.second) root[find(f)] = find(inserted.first->second);
+    }
+  for(std::size_t f = 0; f < root.size(); ++f) root[f] = find(f);
+  return root;
+}
+
 class Stitcher
 {
 public:
@@ -424,9 +445,16 @@ private:
           if(root(i) != keep) remove(fs[i]);
       }
     }
+    std::vector<bool> keep(removed.size());
+    for(std::size_t f = 0; f < removed.size(); ++f) keep[f] = !removed[f];
+    keep_triangles(keep);
+  }
+
+  void keep_triangles(const std::vector<bool>& keep)
+  {
     std::size_t kept = 0;
     for(std::size_t f = 0; f < triangles_.size(); ++f)
-      if(!removed[f]) {
+      if(keep[f]) {
         triangles_[kept] = triangles_[f];
         triangle_patch_[kept] = triangle_patch_[f];
         ++kept;
@@ -440,27 +468,13 @@ private:
   void remove_islands()
   {
     const std::size_t n = triangles_.size();
-    std::vector<std::size_t> root(n);
-    std::iota(root.begin(), root.end(), 0);
-    auto find_root = [&](std::size_t x) {
-      while(root[x] != x) x = root[x] = root[root[x]];
-      return x;
-    };
-    std::unordered_map<std::uint64_t, std::size_t> edge_owner;
-    for(std::size_t f = 0; f < n; ++f)
-      for(int i = 0; i < 3; ++i) {
-        const std::size_t u = triangles_[f][i], v = triangles_[f][(i + 1) % 3];
-        const std::uint64_t key = (std::uint64_t((std::min)(u, v)) << 32) | std::uint64_t((std::max)(u, v));
-        auto inserted = edge_owner.emplace(key, f);
-        if(!inserted.second) root[find_root(f)] = find_root(inserted.first->second);
-      }
+    const std::vector<std::size_t> root = edge_connected_components(triangles_);
     // size of each output component, and the input component it mostly comes from
     std::unordered_map<std::size_t, std::size_t> size;
     std::unordered_map<std::size_t, std::unordered_map<std::size_t, std::size_t> > votes;
     for(std::size_t f = 0; f < n; ++f) {
-      const std::size_t r = find_root(f);
-      ++size[r];
-      ++votes[r][input_component_[patches_[triangle_patch_[f]].triangles.front()]];
+      ++size[root[f]];
+      ++votes[root[f]][input_component_[patches_[triangle_patch_[f]].triangles.front()]];
     }
     std::unordered_map<std::size_t, std::size_t> best;  // input component -> output component kept
     std::unordered_map<std::size_t, std::size_t> source;
@@ -475,16 +489,9 @@ private:
         best[top] = entry.first;
     }
     islands_removed_ = votes.size() - best.size();
-    std::size_t kept = 0;
-    for(std::size_t f = 0; f < n; ++f) {
-      const std::size_t r = find_root(f);
-      if(best[source[r]] != r) continue;
-      triangles_[kept] = triangles_[f];
-      triangle_patch_[kept] = triangle_patch_[f];
-      ++kept;
-    }
-    triangles_.resize(kept);
-    triangle_patch_.resize(kept);
+    std::vector<bool> keep(n);
+    for(std::size_t f = 0; f < n; ++f) keep[f] = best[source[root[f]]] == root[f];
+    keep_triangles(keep);
   }
 
   Marching_cubes_soup compact()
