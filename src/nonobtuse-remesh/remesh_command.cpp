@@ -95,8 +95,8 @@ int remesh_command(int argc, char** argv)
       throw std::invalid_argument("--stop-after must be one of: init (got '" + stop_after + "')");
     if(signs != "patches" && signs != "inside-test")
       throw std::invalid_argument("--signs must be patches or inside-test (got '" + signs + "')");
-    if(resolution < 1 || resolution > 4096)
-      throw std::invalid_argument("--resolution must be between 1 and 4096");
+    if(resolution < 1 || resolution > 1024)
+      throw std::invalid_argument("--resolution must be between 1 and 1024");
     check_output_path(output_path, {input_path});
     if(!NR::internal::is_mesh_extension(NR::internal::file_extension(output_path)))
       throw NR::Output_error("cannot write '" + output_path + "': unsupported extension (expected .off, .obj, .ply or .stl)");
@@ -107,13 +107,18 @@ int remesh_command(int argc, char** argv)
     if(source == NR::Sign_source::inside_test && !CGAL::is_closed(input))
       throw NR::Bad_input("--signs inside-test needs a closed input, and '" + input_path + "' has borders");
     Mesh output;
-    const NR::Marching_cubes_result init = NR::nonobtuse_marching_cubes(
-        input, output, NR::parameters::combine(NR::parameters::resolution(resolution),
-                                               NR::parameters::sign_source(source)));
-    print_initial_mesh(std::cout, init);
+    NR::Marching_cubes_result init;
+    try {
+      init = NR::nonobtuse_marching_cubes(input, output,
+                                          NR::parameters::combine(NR::parameters::resolution(resolution),
+                                                                  NR::parameters::sign_source(source)));
+    } catch(const std::invalid_argument& e) {  // the arguments were checked: it is the input
+      throw NR::Bad_input("'" + input_path + "': " + e.what());
+    }
     if(num_faces(output) == 0)
       throw NR::Bad_input("'" + input_path + "' is too small or too thin for resolution " +
                           std::to_string(resolution) + ": the initial mesh is empty");
+    print_initial_mesh(std::cout, init);
 
     // The file itself must certify: it is re-read and certified before it
     // replaces anything.

@@ -173,8 +173,9 @@ inline void orient_like_input(const Input_triangles& input, const std::vector<st
 ///     `Sign_source::inside_test` (closed inputs only) \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// Throws std::invalid_argument for a bad resolution, a flat input, or an
-/// inside test asked on an open input.
+/// Throws std::invalid_argument for a resolution outside [1, 1024], a flat
+/// input, an input too small or too far from the origin for exact grid
+/// coordinates, or an inside test asked on an open input.
 template <typename TriangleMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, TriangleMesh& output,
@@ -193,9 +194,12 @@ Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, Triang
   if(source == Sign_source::inside_test && !is_closed(input))
     throw std::invalid_argument("the inside test needs a closed input");
 
-  const internal::Grid grid(PMP::bbox(input), result.resolution);
-  result.cube_size = grid.cube_size();
   const internal::Input_triangles in = internal::input_triangles(input);
+  std::vector<internal::Epick::Point_3> corners;
+  for(const auto& t : in.triangles)
+    for(int i = 0; i < 3; ++i) corners.push_back(t[i]);
+  const internal::Grid grid(PMP::bbox(input), result.resolution, corners);
+  result.cube_size = grid.cube_size();
   result.input_triangles = in.triangles.size();
   std::vector<bool> usable(in.triangles.size());
   for(std::size_t t = 0; t < in.triangles.size(); ++t) {

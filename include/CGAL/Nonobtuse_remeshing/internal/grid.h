@@ -7,9 +7,12 @@
 // origin + p * h/2 for an integer p: an integer times 2^(e-10), exact in
 // double. Right angles of the table are therefore exactly 90 degrees.
 //
-// The origin is shifted by 357/1024 of a cube from the round lattice, so
-// that inputs whose coordinates are round numbers (a cube [-1, 1]^3, an
-// earlier output) do not fall on grid planes, where votes would abstain.
+// The origin is shifted off the round lattice by fractions s/1024 of a cube,
+// different along each axis, so that no input vertex lies on a grid plane,
+// where votes would abstain: the first of a few shifts that keeps every input
+// vertex at least 1e-9 cube away from the grid planes is used (round inputs
+// like [-1, 1]^3 and earlier outputs of this package would otherwise meet
+// them).
 
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_GRID_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_GRID_H
@@ -29,10 +32,12 @@ namespace internal {
 class Grid
 {
 public:
-  Grid(const Bbox_3& box, int resolution)
+  /// `points`: the input vertices, kept off the grid planes if possible.
+  template <typename PointRange>
+  Grid(const Bbox_3& box, int resolution, const PointRange& points)
   {
-    if(resolution < 1 || resolution > 4096)
-      throw std::invalid_argument("resolution must be between 1 and 4096, got " + std::to_string(resolution));
+    if(resolution < 1 || resolution > 1024)
+      throw std::invalid_argument("resolution must be between 1 and 1024, got " + std::to_string(resolution));
     const double extent = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
     if(!(extent > 0.) || !std::isfinite(extent))
       throw std::invalid_argument("the input's bounding box is flat or not finite");
@@ -41,14 +46,31 @@ public:
     const int e = exponent - 8;
     const double m = std::ceil(std::ldexp(fraction, 8));  // integer in [128, 256]
     h_ = std::ldexp(m, e);
-    const double shift = std::ldexp(m * 357., e - 10);
-    for(int a = 0; a < 3; ++a) {
-      const double lo = a == 0 ? box.xmin() : (a == 1 ? box.ymin() : box.zmin());
-      const double hi = a == 0 ? box.xmax() : (a == 1 ? box.ymax() : box.zmax());
-      origin_[a] = (std::floor(lo / h_) - 1.) * h_ + shift;
-      if(origin_[a] + h_ >= lo) origin_[a] -= h_;  // at least one cube of margin
-      cubes_[a] = int(std::ceil((hi - origin_[a]) / h_)) + 1;
+    const double unit = std::ldexp(1., e - 10);  // every coordinate is an integer times this
+    if(!(unit > 1e-290))
+      throw std::invalid_argument("the input is too small to be meshed exactly in double");
+    std::size_t best_on_planes = std::size_t(-1);
+    for(int attempt = 0; attempt < 8; ++attempt) {
+      place(box, m, e, attempt);
+      std::size_t on_planes = 0;
+      for(const auto& p : points)
+        for(int a = 0; a < 3; ++a) {
+          const double r = (p[a] - origin_[a]) / h_;
+          on_planes += std::abs(r - std::round(r)) < 1e-9;
+        }
+      if(on_planes < best_on_planes) {
+        best_on_planes = on_planes;
+        best_attempt_ = attempt;
+      }
+      if(on_planes == 0) break;
     }
+    place(box, m, e, best_attempt_);
+    // exact while every coordinate is below 2^52 units
+    for(int a = 0; a < 3; ++a)
+      if(std::abs(origin_[a]) >= std::ldexp(unit, 52) ||
+         std::abs(origin_[a] + cubes_[a] * h_) >= std::ldexp(unit, 52))
+        throw std::invalid_argument("the input lies too far from the origin for its size to be meshed "
+                                    "exactly in double: translate it closer to the origin");
   }
 
   double cube_size() const { return h_; }
@@ -94,7 +116,24 @@ public:
   }
 
 private:
+  // Origin shifted by a different fraction of a cube along each axis, so
+  // that the diagonals of an earlier (dyadic) output do not run through the
+  // grid lines either.
+  void place(const Bbox_3& box, double m, int e, int attempt)
+  {
+    static const double fractions[8][3] = {{357, 611, 173}, {829, 449, 277}, {953, 71, 541},
+                                           {197, 887, 419}, {683, 239, 761}, {113, 337, 919},
+                                           {571, 983, 53},  {401, 131, 857}};
+    for(int a = 0; a < 3; ++a) {
+      const double lo = box.min(a), hi = box.max(a);
+      origin_[a] = (std::floor(lo / h_) - 1.) * h_ + std::ldexp(m * fractions[attempt][a], e - 10);
+      if(origin_[a] + h_ >= lo) origin_[a] -= h_;  // at least one cube of margin
+      cubes_[a] = int(std::ceil((hi - origin_[a]) / h_)) + 1;
+    }
+  }
+
   double h_;
+  int best_attempt_ = 0;
   double origin_[3];
   int cubes_[3];
 };

@@ -74,8 +74,11 @@ inline bool patch_signs(const Grid& grid, const std::array<int, 3>& cube, const 
     const Epick::Point_3& p = corners[ends[0]];
     const Epick::Point_3& q = corners[ends[1]];
     const Epick::Segment_3 segment(p, q);
+    // closest crossings to each end; on an exact tie (the edge meets an input
+    // edge or vertex) the tied triangles must agree, else the edge abstains
     double best_near_p = 2., best_near_q = -1.;
     std::size_t near_p = Input_triangles::none, near_q = Input_triangles::none;
+    bool tie_p = false, tie_q = false;
     for(std::size_t t : patch) {
       const Epick::Triangle_3& tri = input.triangles[t];
       // quick rejection: the edge is axis-parallel
@@ -91,18 +94,24 @@ inline bool patch_signs(const Grid& grid, const std::array<int, 3>& cube, const 
       const double dp = n * (p - tri[0]), dq = n * (q - tri[0]);
       if(dp == dq) continue;  // the edge lies in the triangle's plane
       const double lambda = dp / (dp - dq);
-      if(lambda < best_near_p) { best_near_p = lambda; near_p = t; }
-      if(lambda > best_near_q) { best_near_q = lambda; near_q = t; }
+      auto side = [&](std::size_t s, int corner) {
+        const Epick::Triangle_3& u = input.triangles[s];
+        return CGAL::orientation(u[0], u[1], u[2], corners[corner]);
+      };
+      if(lambda < best_near_p) { best_near_p = lambda; near_p = t; tie_p = false; }
+      else if(lambda == best_near_p && side(t, ends[0]) != side(near_p, ends[0])) tie_p = true;
+      if(lambda > best_near_q) { best_near_q = lambda; near_q = t; tie_q = false; }
+      else if(lambda == best_near_q && side(t, ends[1]) != side(near_q, ends[1])) tie_q = true;
     }
-    auto cast = [&](std::size_t t, int corner) {
-      if(t == Input_triangles::none) return;
+    auto cast = [&](std::size_t t, bool tied, int corner) {
+      if(t == Input_triangles::none || tied) return;
       const Epick::Triangle_3& tri = input.triangles[t];
       const Orientation o = CGAL::orientation(tri[0], tri[1], tri[2], corners[corner]);
       if(o == POSITIVE) vote[corner] |= 1;
       else if(o == NEGATIVE) vote[corner] |= 2;
     };
-    cast(near_p, ends[0]);
-    cast(near_q, ends[1]);
+    cast(near_p, tie_p, ends[0]);
+    cast(near_q, tie_q, ends[1]);
   }
   voted = false;
   for(int c = 0; c < 8; ++c) {

@@ -16,8 +16,10 @@
 //    triangles or two of the same direction, a vertex with several fans, a
 //    face twice) is removed and counted, never left in the output.
 // 4. Islands: near open borders and self-intersections, ignored patches can
-//    cut small pieces off the surface. Each input component keeps the largest
-//    output component made from it; the other pieces are removed and counted.
+//    cut small open fragments off the surface. A piece is removed (and
+//    counted) only when it is open, is not the largest piece made from its
+//    input component, and has at most max(8, 1%) of that largest piece's
+//    triangles; closed pieces and large pieces are real geometry and stay.
 
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_STITCHING_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_STITCHING_H
@@ -254,11 +256,6 @@ private:
   {
     for(int k = 0; k < 3; ++k) {
       if(a[k] != b[k] || (a[k] & 1)) continue;
-      bool same_square = true;
-      for(int m = 0; m < 3; ++m)
-        if(m != k && (a[m] - (a[m] & ~std::int64_t(1)) > 2 || (a[m] >> 1) != ((a[m] - (a[m] & 1)) >> 1)))
-          same_square = false;
-      if(!same_square) continue;
       Position low;
       for(int m = 0; m < 3; ++m) {
         if(m == k) { low[m] = a[m]; continue; }
@@ -476,21 +473,41 @@ private:
       ++size[root[f]];
       ++votes[root[f]][input_component_[patches_[triangle_patch_[f]].triangles.front()]];
     }
-    std::unordered_map<std::size_t, std::size_t> best;  // input component -> output component kept
+    std::unordered_map<std::size_t, std::size_t> largest;  // input component -> its largest piece
     std::unordered_map<std::size_t, std::size_t> source;
     for(const auto& entry : votes) {
       std::size_t top = 0, count = 0;
       for(const auto& v : entry.second)
         if(v.second > count || (v.second == count && v.first < top)) { top = v.first; count = v.second; }
       source[entry.first] = top;
-      auto kept = best.find(top);
-      if(kept == best.end() || size[entry.first] > size[kept->second] ||
+      auto kept = largest.find(top);
+      if(kept == largest.end() || size[entry.first] > size[kept->second] ||
          (size[entry.first] == size[kept->second] && entry.first < kept->second))
-        best[top] = entry.first;
+        largest[top] = entry.first;
     }
-    islands_removed_ = votes.size() - best.size();
+    // pieces with a border edge (an edge used once)
+    std::unordered_map<std::uint64_t, int> uses;
+    for(const auto& t : triangles_)
+      for(int i = 0; i < 3; ++i) {
+        const std::size_t u = t[i], v = t[(i + 1) % 3];
+        ++uses[(std::uint64_t((std::min)(u, v)) << 32) | std::uint64_t((std::max)(u, v))];
+      }
+    std::unordered_set<std::size_t> open;
+    for(std::size_t f = 0; f < n; ++f)
+      for(int i = 0; i < 3; ++i) {
+        const std::size_t u = triangles_[f][i], v = triangles_[f][(i + 1) % 3];
+        if(uses[(std::uint64_t((std::min)(u, v)) << 32) | std::uint64_t((std::max)(u, v))] == 1) open.insert(root[f]);
+      }
+    std::unordered_set<std::size_t> removed;
+    for(const auto& entry : size) {
+      const std::size_t main_piece = largest[source[entry.first]];
+      if(entry.first != main_piece && open.count(entry.first) &&
+         entry.second <= (std::max)(std::size_t(8), size[main_piece] / 100))
+        removed.insert(entry.first);
+    }
+    islands_removed_ = removed.size();
     std::vector<bool> keep(n);
-    for(std::size_t f = 0; f < n; ++f) keep[f] = best[source[root[f]]] == root[f];
+    for(std::size_t f = 0; f < n; ++f) keep[f] = removed.count(root[f]) == 0;
     keep_triangles(keep);
   }
 
