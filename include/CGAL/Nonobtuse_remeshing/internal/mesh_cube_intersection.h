@@ -68,18 +68,51 @@ inline Cube_triangles mesh_cube_intersection(const Grid& grid,
                                       (box.max(1) - box.min(1)) * (box.max(1) - box.min(1)) +
                                       (box.max(2) - box.min(2)) * (box.max(2) - box.min(2)));
     const double margin = 1e-9 * std::sqrt(n2) * (diameter + 4 * h);
-    for(int k = lo[2]; k <= hi[2]; ++k)
-      for(int j = lo[1]; j <= hi[1]; ++j)
-        for(int i = lo[0]; i <= hi[0]; ++i) {
-          if(use_plane) {
-            const double cx = grid.coordinate(0, 2 * i + 1) - tri[0].x();
-            const double cy = grid.coordinate(1, 2 * j + 1) - tri[0].y();
-            const double cz = grid.coordinate(2, 2 * k + 1) - tri[0].z();
-            if(std::abs(nx * cx + ny * cy + nz * cz) > reach + margin) continue;
-          }
-          if(CGAL::do_intersect(tri, grid.cube_box(i, j, k)))
-            pairs.emplace_back(grid.cube_id(i, j, k), t);
+    auto test = [&](int i, int j, int k) {
+      if(use_plane) {
+        const double cx = grid.coordinate(0, 2 * i + 1) - tri[0].x();
+        const double cy = grid.coordinate(1, 2 * j + 1) - tri[0].y();
+        const double cz = grid.coordinate(2, 2 * k + 1) - tri[0].z();
+        if(std::abs(nx * cx + ny * cy + nz * cz) > reach + margin) return;
+      }
+      if(CGAL::do_intersect(tri, grid.cube_box(i, j, k)))
+        pairs.emplace_back(grid.cube_id(i, j, k), t);
+    };
+    if(!use_plane) {  // needles: every cube of the bounding box
+      for(int k = lo[2]; k <= hi[2]; ++k)
+        for(int j = lo[1]; j <= hi[1]; ++j)
+          for(int i = lo[0]; i <= hi[0]; ++i) test(i, j, k);
+      continue;
+    }
+    // Along the axis d where the normal is largest, the plane crosses each
+    // column of cubes in a short range: scan the columns of the two other
+    // axes and, in each, only the cubes the plane can reach (plus one on each
+    // side), so that a large slanted triangle costs its area, not its volume.
+    const double normal[3] = {nx, ny, nz};
+    const int d = std::abs(nx) >= std::abs(ny) ? (std::abs(nx) >= std::abs(nz) ? 0 : 2)
+                                               : (std::abs(ny) >= std::abs(nz) ? 1 : 2);
+    const int u = (d + 1) % 3, w = (d + 2) % 3;
+    const double level = nx * tri[0].x() + ny * tri[0].y() + nz * tri[0].z();
+    for(int a = lo[u]; a <= hi[u]; ++a)
+      for(int b = lo[w]; b <= hi[w]; ++b) {
+        double low = 1e300, high = -1e300;
+        for(int corner = 0; corner < 4; ++corner) {
+          const double xu = grid.coordinate(u, 2 * (a + (corner & 1)));
+          const double xw = grid.coordinate(w, 2 * (b + (corner >> 1)));
+          const double xd = (level - normal[u] * xu - normal[w] * xw) / normal[d];
+          low = (std::min)(low, xd);
+          high = (std::max)(high, xd);
         }
+        const int from = (std::max)(lo[d], grid.cube_floor(d, low) - 1);
+        const int to = (std::min)(hi[d], grid.cube_floor(d, high) + 3);
+        for(int c = from; c <= to; ++c) {
+          int index[3];
+          index[d] = c;
+          index[u] = a;
+          index[w] = b;
+          test(index[0], index[1], index[2]);
+        }
+      }
   }
   std::sort(pairs.begin(), pairs.end());
   Cube_triangles result;
