@@ -184,9 +184,23 @@ TEST(MarchingCubesTable, AllConfigurationsExhaustively)
       EXPECT_GT(dot(normal, minus(corner_position(to), corner_position(from))), 0) << "slot " << s;
     }
   }
-  // the thesis's centre cases exist, and the centre is not used everywhere
   EXPECT_GT(with_centre, 0u);
-  EXPECT_LT(with_centre, 254u);
+  // The thesis's cases by configuration (bit c set: corner c inside): the
+  // centre where the original Marching Cubes is obtuse, case 5 (three inside
+  // corners of a face) and case 9 (a corner and its three neighbours, six
+  // equilateral triangles); none in cases 1, 2 and 8, where a centre vertex
+  // would have valence 3 or 4.
+  auto uses_centre = [&](unsigned config) {
+    for(const auto& t : table[config].triangles)
+      if(std::count(t.begin(), t.end(), MC::centre_slot)) return true;
+    return false;
+  };
+  EXPECT_TRUE(uses_centre(0x07));   // case 5: corners 0, 1, 2
+  EXPECT_TRUE(uses_centre(0x17));   // case 9: corner 0 and its neighbours 1, 2, 4
+  EXPECT_EQ(table[0x17].triangles.size(), 6u);
+  EXPECT_FALSE(uses_centre(0x01));  // case 1
+  EXPECT_FALSE(uses_centre(0x03));  // case 2
+  EXPECT_FALSE(uses_centre(0x0f));  // case 8
 }
 
 TEST(MarchingCubesTable, FlatSheetsGetValenceSix)
@@ -287,16 +301,22 @@ TEST_P(MarchingCubesOnMesh, ManifoldCertifiedAndFaithful)
   EXPECT_EQ(q.border_cycles, r.borders_out);
   // At N = 10 thin parts (an elephant's tusks) come apart as closed pieces,
   // which are kept; from N = 40 on the components are those of the input.
-  if(resolution >= 40) EXPECT_EQ(q.connected_components, in.connected_components) << "components";
-  else EXPECT_GE(q.connected_components, in.connected_components) << "components";
-  if(in.border_cycles == 0 && resolution >= 40)
+  if(resolution >= 40) {
+    EXPECT_EQ(q.connected_components, in.connected_components) << "components";
+  } else {
+    EXPECT_GE(q.connected_components, in.connected_components) << "components";
+  }
+  if(in.border_cycles == 0 && resolution >= 40) {
     EXPECT_EQ(q.border_cycles, 0u) << "a closed input gives a closed output";
+  }
   // The topology holds once the grid resolves the handles: at N = 40 one of
   // the elephant's handles is narrower than two cubes and closes.
-  if(in.border_cycles == 0 && resolution >= 70)
+  if(in.border_cycles == 0 && resolution >= 70) {
     EXPECT_EQ(q.euler_characteristic, in.euler_characteristic);
-  if(in.border_cycles > 0 && resolution == 100 && in.self_intersections == 0)
+  }
+  if(in.border_cycles > 0 && resolution == 100 && in.self_intersections == 0) {
     EXPECT_EQ(q.border_cycles, in.border_cycles);
+  }
   // every output face lies in (or on) the cube of its patch
   const NR::internal::Grid grid = grid_of(input, resolution);
   const auto in_faces = input.faces();
