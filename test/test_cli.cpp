@@ -227,11 +227,52 @@ TEST(Cli, RemeshWritesACertifiedMesh)
   EXPECT_EQ(std::system(("test $(ls -A '" + folder + "' | wc -l) -eq 2").c_str()), 0);
 }
 
+// The default pipeline runs init and fit; the fit's statistics are printed
+// and in the JSON, the written file certifies, and the fit is closer.
+TEST(Cli, RemeshFitsByDefault)
+{
+  const std::string folder = scratch();
+  const std::string init = folder + "/init.off", fit = folder + "/fit.ply";
+  const Outcome a = run("remesh " + data("pig.off") + " -o " + init + " -N 40 --stop-after init --json " + folder + "/init.json");
+  ASSERT_EQ(a.code, 0) << a.err;
+  EXPECT_EQ(a.out.find("fit ("), std::string::npos);
+  const Outcome b = run("remesh " + data("pig.off") + " -o " + fit + " -N 40 --json " + folder + "/fit.json");
+  ASSERT_EQ(b.code, 0) << b.err;
+  EXPECT_NE(b.out.find("fit (deform-to-fit"), std::string::npos);
+  EXPECT_NE(b.err.find("fit: "), std::string::npos) << "progress line";
+  Mesh mesh;
+  NR::read_triangle_mesh(fit, mesh);
+  EXPECT_TRUE(NR::certify_angle_bounds(mesh).is_certified());
+  const auto i = nlohmann::json::parse(slurp(folder + "/init.json"));
+  const auto f = nlohmann::json::parse(slurp(folder + "/fit.json"));
+  EXPECT_FALSE(i.contains("fit"));
+  EXPECT_EQ(f["fit"]["vertices"], num_vertices(mesh));
+  EXPECT_GT(f["fit"]["moves"].get<std::size_t>(), num_vertices(mesh));
+  EXPECT_EQ(f["fit"]["qp_fallbacks"], 0);
+  EXPECT_EQ(f["fit"]["budget_exhausted"], false);
+  EXPECT_EQ(f["output_report"]["topology"]["border_cycles"], i["output_report"]["topology"]["border_cycles"]);
+  const auto& di = i["output_report"]["distance_to_reference"];
+  const auto& df = f["output_report"]["distance_to_reference"];
+  EXPECT_LE(df["hausdorff_symmetric"].get<double>(), di["hausdorff_symmetric"].get<double>());
+  EXPECT_LE(5. * df["mean_to_reference"].get<double>(), di["mean_to_reference"].get<double>());
+
+  // a budget is honoured and said; --quiet silences the progress line
+  const Outcome c = run("remesh " + data("pig.off") + " -o " + fit + " -N 40 --max-moves 50 --quiet");
+  ASSERT_EQ(c.code, 0) << c.err;
+  EXPECT_NE(c.out.find("moves 50 "), std::string::npos) << c.out;
+  EXPECT_NE(c.out.find("the budget ran out"), std::string::npos);
+  EXPECT_EQ(c.err.find("fit: "), std::string::npos);
+}
+
 TEST(Cli, RemeshRefusesBadRequestsWithoutWriting)
 {
   const std::string folder = scratch();
   const std::string out = folder + "/out.off";
-  EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + out + " --stop-after fit").code, 2);
+  EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + out + " --stop-after magic").code, 2);
+  EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + out + " --alpha 2").code, 2);
+  EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + out + " -k 0").code, 2);
+  EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + out + " --quadric-rings 9").code, 2);
+  EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + out + " --fit-tolerance -1").code, 2);
   EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + out + " --resolution 0").code, 2);
   EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + out + " --signs magic").code, 2);
   EXPECT_EQ(run("remesh " + data("sphere.off")).code, 2);  // no output

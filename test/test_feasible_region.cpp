@@ -6,6 +6,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/nonobtuse_remeshing.h>
+#include <CGAL/Nonobtuse_remeshing/deform_to_fit.h>
 #include <CGAL/Nonobtuse_remeshing/internal/feasible_region.h>
 #include <CGAL/Nonobtuse_remeshing/internal/small_qp.h>
 
@@ -30,6 +31,15 @@ Mesh initial_mesh(const std::string& name, int resolution)
   Mesh output;
   NR::nonobtuse_marching_cubes(input, output, NR::parameters::resolution(resolution));
   return output;
+}
+
+// An initial mesh after deform-to-fit: its one-rings are no longer the
+// Marching Cubes configurations.
+Mesh fitted_mesh(const std::string& name, int resolution)
+{
+  Mesh m = initial_mesh(name, resolution);
+  NR::deform_to_fit(m, nonobtuse_test::load(name));
+  return m;
 }
 
 // The one-ring of v: frame (centred on v, scaled by its longest edge),
@@ -91,16 +101,19 @@ TEST(FeasibleRegion, InitialMeshVerticesLieInTheirRegion)
 }
 
 // (b) a million points strictly inside F(v) of real one-rings, spread by a
-// hit-and-run walk from the vertex, all give exactly certified triangles
+// hit-and-run walk from the vertex, all give exactly certified triangles;
+// one-rings of initial meshes and of fitted ones
 TEST(FeasibleRegion, PointsStrictlyInsideAreCertified)
 {
   std::mt19937_64 rng(42);
   std::normal_distribution<double> gauss(0., 1.);
   std::uniform_real_distribution<double> uniform(0., 1.);
   std::size_t samples = 0, rejected = 0;
-  for(const std::string name : {"sphere.off", "pig.off", "elephant.off", "mesh_with_border.off"})
+  for(const std::string name : {"sphere.off", "pig.off", "elephant.off", "mesh_with_border.off", "fitted pig.off",
+                                "fitted elephant.off"})
     for(int k : {1, 2, 4}) {
-      const Mesh m = initial_mesh(name, name == "sphere.off" ? 30 : 50);
+      const Mesh m = name.rfind("fitted ", 0) == 0 ? fitted_mesh(name.substr(7), 40)
+                                                   : initial_mesh(name, name == "sphere.off" ? 30 : 50);
       for(auto v : m.vertices()) {
         One_ring ring;
         ASSERT_TRUE(one_ring(m, v, k, ring));

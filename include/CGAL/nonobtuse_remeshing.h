@@ -4,6 +4,7 @@
 //
 // The package lives in namespace CGAL::Nonobtuse_remeshing. Stages available:
 //   nonobtuse_marching_cubes()  the initial mesh (thesis, chapter 4)
+//   deform_to_fit()         the fit with constrained smoothing (chapter 5)
 //   certify_angle_bounds()  exact certification of the angle bounds
 //   quality_report()        angles, valences, topology, defects, distances
 //   read_triangle_mesh(), write_mesh_atomically()  checked, exact file IO
@@ -16,5 +17,6 @@
 #include <CGAL/Nonobtuse_remeshing/quality_report.h>
 #include <CGAL/Nonobtuse_remeshing/mesh_io.h>
 #include <CGAL/Nonobtuse_remeshing/nonobtuse_marching_cubes.h>
+#include <CGAL/Nonobtuse_remeshing/deform_to_fit.h>
 
 #endif // CGAL_NONOBTUSE_REMESHING_H

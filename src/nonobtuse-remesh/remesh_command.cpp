@@ -1,17 +1,22 @@
-// nonobtuse-remesh remesh INPUT -o OUTPUT [--resolution N] [--stop-after init]
-//                  [--signs patches|inside-test] [--json FILE]
+// nonobtuse-remesh remesh INPUT -o OUTPUT [--resolution N] [--stop-after init|fit]
+//                  [--signs patches|inside-test] [fit options] [--json FILE]
 
 #include "cli.h"
 #include "json_output.h"
 
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
+#include <CGAL/Nonobtuse_remeshing/deform_to_fit.h>
 #include <CGAL/Nonobtuse_remeshing/mesh_io.h>
 #include <CGAL/Nonobtuse_remeshing/nonobtuse_marching_cubes.h>
 #include <CGAL/Nonobtuse_remeshing/quality_report.h>
 
+#include <chrono>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
+
+#include <unistd.h>
 
 namespace nonobtuse_cli {
 
@@ -61,12 +66,84 @@ void print_initial_mesh(std::ostream& out, const NR::Marching_cubes_result& r)
     out << "  note: " << r.degenerate_input_triangles << " degenerate input triangle(s) ignored\n";
 }
 
+json fit_json(const NR::Deform_to_fit_statistics& s)
+{
+  return {{"vertices", s.vertices},
+          {"feature_samples", s.feature_samples},
+          {"moves", s.moves},
+          {"smoothing_moves", s.smoothing_moves},
+          {"qp_solves", s.qp_solves},
+          {"qp_fallbacks", s.qp_fallbacks},
+          {"infeasible_regions", s.infeasible_regions},
+          {"shortened_moves", s.shortened_moves},
+          {"rejected_moves", s.rejected_moves},
+          {"undone_moves", s.undone_moves},
+          {"full_updates", s.full_updates},
+          {"smoothing_passes", s.smoothing_passes},
+          {"intersecting_pairs_found", s.intersecting_pairs_found},
+          {"untangling_moves", s.untangling_moves},
+          {"intersecting_pairs", s.intersecting_pairs},
+          {"rms_vertex_distance_percent", s.rms_distance},
+          {"budget_exhausted", s.budget_exhausted},
+          {"optimization_seconds", s.optimization_seconds},
+          {"smoothing_seconds", s.smoothing_seconds},
+          {"untangling_seconds", s.untangling_seconds},
+          {"seconds", s.seconds}};
+}
+
+void print_fit(std::ostream& out, const NR::Deform_to_fit_statistics& s)
+{
+  out << std::setprecision(4) << "fit (deform-to-fit, " << s.vertices << " vertices, " << s.feature_samples
+      << " feature samples):\n"
+      << "  moves " << s.moves << " (smoothing " << s.smoothing_moves << "), QP solves " << s.qp_solves
+      << ", fallbacks to CGAL's QP solver " << s.qp_fallbacks << ", empty regions " << s.infeasible_regions << "\n"
+      << "  shortened moves " << s.shortened_moves << ", rejected " << s.rejected_moves << ", undone "
+      << s.undone_moves << ", full updates " << s.full_updates << ", smoothing passes " << s.smoothing_passes
+      << "\n"
+      << "  self-intersecting face pairs " << s.intersecting_pairs_found << " after the fit, "
+      << s.intersecting_pairs << " after " << s.untangling_moves << " untangling moves\n"
+      << "  rms vertex distance " << s.rms_distance << "% of the diagonal, optimization "
+      << s.optimization_seconds << " s, smoothing " << s.smoothing_seconds << " s, untangling "
+      << s.untangling_seconds << " s, total " << s.seconds << " s\n";
+  if(s.budget_exhausted) out << "  note: the budget ran out before the fit converged\n";
+}
+
+// The fit's progress line on standard error, at the start and then every
+// second: rewritten in place on a terminal, a new line otherwise.
+struct Fit_progress
+{
+  bool quiet = false;
+  bool terminal = isatty(2) != 0;
+  std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
+  bool shown = false;
+
+  bool keep_going(const NR::Deform_to_fit_statistics& s)
+  {
+    const auto now = std::chrono::steady_clock::now();
+    if(quiet || (shown && now - last < std::chrono::seconds(1))) return true;
+    last = now;
+    shown = true;
+    std::cerr << (terminal ? "\r" : "") << "fit: "
+              << (s.stage == NR::Deform_to_fit_stage::smoothing ? "smoothing" : "optimization") << ", "
+              << s.moves << " moves, rms vertex distance " << std::setprecision(3) << s.rms_distance << "%"
+              << (terminal ? "   " : "\n") << std::flush;
+    return true;
+  }
+  void done()
+  {
+    if(shown && terminal) std::cerr << "\n";
+  }
+};
+
 } // namespace
 
 int remesh_command(int argc, char** argv)
 {
-  std::string input_path, output_path, json_path, stop_after = "init", signs = "patches";
-  int resolution = 100;
+  std::string input_path, output_path, json_path, stop_after = "fit", signs = "patches";
+  int resolution = 100, drum_subdivisions = 2, quadric_rings = 0, smoothing_steps = 2;
+  double alpha = 0.5, fit_tolerance = 1e-4, max_seconds = 0.;
+  std::size_t max_moves = 0;
+  bool quiet = false;
   po::options_description options("options");
   options.add_options()
     ("help,h", "show this help")
@@ -75,24 +152,49 @@ int remesh_command(int argc, char** argv)
      "where to write the result (.off, .obj, .ply, .stl)")
     ("resolution,N", po::value<int>(&resolution)->default_value(100),
      "Marching Cubes cubes along the longest side of the input's bounding box")
-    ("stop-after", po::value<std::string>(&stop_after)->default_value("init"),
-     "last stage to run: init (the only stage so far)")
+    ("stop-after", po::value<std::string>(&stop_after)->default_value("fit"),
+     "last stage to run: init or fit")
     ("signs", po::value<std::string>(&signs)->default_value("patches"),
      "corner signs: patches (open inputs too) or inside-test (closed inputs)")
+    ("alpha", po::value<double>(&alpha)->default_value(0.5), "fit: weight of the distance term, in [0, 1]")
+    ("drum-subdivisions,k", po::value<int>(&drum_subdivisions)->default_value(2),
+     "fit: drum planes per side in the feasible regions, in [1, 16]")
+    ("quadric-rings,r", po::value<int>(&quadric_rings)->default_value(0),
+     "fit: rings of input triangles around the closest one in the distance quadric, in [0, 4]")
+    ("smoothing-steps", po::value<int>(&smoothing_steps)->default_value(2),
+     "fit: constrained Laplacian smoothing passes between optimizations")
+    ("fit-tolerance", po::value<double>(&fit_tolerance)->default_value(1e-4),
+     "fit: stop when no move improves the cost by (tolerance * diagonal)^2")
+    ("max-moves", po::value<std::size_t>(&max_moves), "fit: budget in moves (default: none)")
+    ("max-seconds", po::value<double>(&max_seconds), "fit: budget in seconds (default: none)")
+    ("no-lazy-evaluation", "fit: re-evaluate the neighbours of a moved vertex at once")
+    ("no-early-smoothing", "fit: complete each optimization phase before smoothing")
+    ("no-tangential-smoothing", "fit: smoothing term in every direction, as in the thesis")
+    ("no-feature-attraction", "fit: no attraction of the input's vertices and sharp edges")
+    ("quiet,q", po::bool_switch(&quiet), "no progress line")
     ("json", po::value<std::string>(&json_path), "also write statistics and the quality report as JSON");
   po::positional_options_description positional;
   positional.add("input", 1);
   po::variables_map vm;
   int exit_code = success;
-  if(!parse_options("remesh", "INPUT -o OUTPUT [--resolution N] [--stop-after init] [options]\n\n"
+  if(!parse_options("remesh", "INPUT -o OUTPUT [--resolution N] [--stop-after init|fit] [options]\n\n"
                     "Remeshes INPUT into a mesh whose angles all lie in [30, 90] degrees, certified\n"
-                    "exactly on the written file. Stages: init (nonobtuse Marching Cubes).",
+                    "exactly on the written file. Stages: init (nonobtuse Marching Cubes), fit\n"
+                    "(deform-to-fit with constrained Laplacian smoothing).",
                     options, positional, argc, argv, vm, exit_code))
     return exit_code;
 
   return run_guarded("remesh", [&]() {
-    if(stop_after != "init")
-      throw std::invalid_argument("--stop-after must be one of: init (got '" + stop_after + "')");
+    if(stop_after != "init" && stop_after != "fit")
+      throw std::invalid_argument("--stop-after must be one of: init, fit (got '" + stop_after + "')");
+    if(!(alpha >= 0. && alpha <= 1.)) throw std::invalid_argument("--alpha must lie in [0, 1]");
+    if(drum_subdivisions < 1 || drum_subdivisions > 16)
+      throw std::invalid_argument("--drum-subdivisions must lie in [1, 16]");
+    if(quadric_rings < 0 || quadric_rings > 4) throw std::invalid_argument("--quadric-rings must lie in [0, 4]");
+    if(smoothing_steps < 0 || smoothing_steps > 100)
+      throw std::invalid_argument("--smoothing-steps must lie in [0, 100]");
+    if(!(fit_tolerance > 0. && fit_tolerance < 1.)) throw std::invalid_argument("--fit-tolerance must lie in (0, 1)");
+    if(vm.count("max-seconds") && !(max_seconds >= 0.)) throw std::invalid_argument("--max-seconds must be at least 0");
     if(signs != "patches" && signs != "inside-test")
       throw std::invalid_argument("--signs must be patches or inside-test (got '" + signs + "')");
     if(resolution < 1 || resolution > 1024)
@@ -119,6 +221,27 @@ int remesh_command(int argc, char** argv)
       throw NR::Bad_input("'" + input_path + "' is too small or too thin for resolution " +
                           std::to_string(resolution) + ": the initial mesh is empty");
     print_initial_mesh(std::cout, init);
+
+    NR::Deform_to_fit_statistics fit;
+    if(stop_after == "fit") {
+      Fit_progress progress;
+      progress.quiet = quiet;
+      fit = NR::deform_to_fit(
+          output, input,
+          NR::parameters::combine(
+              NR::parameters::alpha(alpha), NR::parameters::drum_subdivisions(drum_subdivisions),
+              NR::parameters::quadric_rings(quadric_rings), NR::parameters::smoothing_steps(smoothing_steps),
+              NR::parameters::fit_tolerance(fit_tolerance),
+              NR::parameters::max_moves(vm.count("max-moves") ? max_moves : std::size_t(-1)),
+              NR::parameters::max_seconds(vm.count("max-seconds") ? max_seconds : 1e300),
+              NR::parameters::lazy_evaluation(vm.count("no-lazy-evaluation") == 0),
+              NR::parameters::early_smoothing(vm.count("no-early-smoothing") == 0),
+              NR::parameters::tangential_smoothing(vm.count("no-tangential-smoothing") == 0),
+              NR::parameters::attract_features(vm.count("no-feature-attraction") == 0),
+              NR::parameters::fit_visitor(std::ref(progress))));
+      progress.done();
+      print_fit(std::cout, fit);
+    }
 
     // The file itself must certify: it is re-read and certified before it
     // replaces anything.
@@ -149,6 +272,7 @@ int remesh_command(int argc, char** argv)
       j["input"] = input_path;
       j["output"] = output_path;
       j["init"] = initial_mesh_json(init);
+      if(stop_after == "fit") j["fit"] = fit_json(fit);
       j["output_report"] = report_to_json(output_path, report, {});
       write_json_atomically(json_path, j);
     }

@@ -26,7 +26,19 @@ namespace internal_np {
   X(maximum_self_intersections_t,                                               \
     maximum_self_intersections)           /* cap on reported face pairs */      \
   X(resolution_t, resolution)             /* cubes along the longest side */    \
-  X(sign_source_t, sign_source)           /* Marching Cubes corner signs */
+  X(sign_source_t, sign_source)           /* Marching Cubes corner signs */     \
+  X(alpha_t, alpha)                       /* fit vs smoothness weight */        \
+  X(drum_subdivisions_t, drum_subdivisions) /* k of the drum planes */          \
+  X(quadric_rings_t, quadric_rings)       /* r of the fitting quadric */        \
+  X(smoothing_steps_t, smoothing_steps)   /* constrained smoothing passes */    \
+  X(fit_tolerance_t, fit_tolerance)       /* stop below this improvement */     \
+  X(max_moves_t, max_moves)               /* budget in moves */                 \
+  X(max_seconds_t, max_seconds)           /* budget in seconds */               \
+  X(lazy_evaluation_t, lazy_evaluation)   /* thesis 5.6 */                      \
+  X(early_smoothing_t, early_smoothing)   /* thesis 5.6 */                      \
+  X(tangential_smoothing_t, tangential_smoothing) /* S along the input only */  \
+  X(attract_features_t, attract_features) /* input tips and creases hold */     \
+  X(fit_visitor_t, fit_visitor)           /* progress and cancellation */
 
 #define CGAL_NONOBTUSE_DECLARE_TAG(TAG, NAME) enum TAG { NAME };
 CGAL_NONOBTUSE_TAGS(CGAL_NONOBTUSE_DECLARE_TAG)
@@ -39,6 +51,7 @@ namespace parameters {
 using CGAL::parameters::choose_parameter;
 using CGAL::parameters::get_parameter;
 using CGAL::parameters::default_values;
+using CGAL::parameters::get_parameter_reference;
 
 #define CGAL_NONOBTUSE_DECLARE_FUNCTION(TAG, NAME)                              \
   template <typename T>                                                         \

@@ -1,0 +1,114 @@
+// Deform-to-fit (thesis, chapter 5): moves the vertices of a certified mesh
+// towards the input surface, keeping every angle in [30, 90] degrees.
+
+#ifndef CGAL_NONOBTUSE_REMESHING_DEFORM_TO_FIT_H
+#define CGAL_NONOBTUSE_REMESHING_DEFORM_TO_FIT_H
+
+#include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
+#include <CGAL/Nonobtuse_remeshing/internal/Deform_to_fit.h>
+#include <CGAL/Nonobtuse_remeshing/internal/closest_triangle.h>
+#include <CGAL/Nonobtuse_remeshing/parameters.h>
+
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <type_traits>
+
+namespace CGAL {
+namespace Nonobtuse_remeshing {
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Default visitor of `deform_to_fit()`: never cancels. A visitor has
+/// `bool keep_going(const Deform_to_fit_statistics&)`, called before every
+/// move; returning false stops the optimization, and the mesh stays
+/// certified.
+struct Default_deform_to_fit_visitor
+{
+  bool keep_going(const Deform_to_fit_statistics&) { return true; }
+};
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Deform-to-fit (thesis, chapter 5): moves the vertices of `mesh`, whose
+/// angles must already lie in [30, 90] degrees (the initial mesh's do), to
+/// fit `input`. Each vertex solves the quadratic program of the thesis's
+/// equation 5.15, L = alpha D + (1 - alpha) S over its linearized feasible
+/// region F(v); the vertex with the largest improvement moves first. Each
+/// move is certified exactly before it is applied (or shortened, or
+/// skipped), so `mesh` is certified at every moment, also when the budget
+/// runs out or the visitor cancels. The connectivity does not change.
+///
+/// Beyond the thesis, two terms keep the fit close in the Hausdorff sense:
+/// S acts along the input's tangent plane only (`tangential_smoothing`), and
+/// the input's vertices and points along its sharp and border edges attract
+/// their nearest mesh vertex (`attract_features`). Both can be switched off
+/// to run the thesis's objective as written.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{alpha} weight of the distance term D, in [0, 1]; default 0.5 \cgalParamNEnd
+///   \cgalParamNBegin{drum_subdivisions} k, the drum planes per side of F(v), in [1, 16]; default 2 \cgalParamNEnd
+///   \cgalParamNBegin{quadric_rings} r, the rings of input triangles around the closest one
+///     whose planes make D, in [0, 4]; default 0 \cgalParamNEnd
+///   \cgalParamNBegin{smoothing_steps} constrained Laplacian smoothing passes; default 2 \cgalParamNEnd
+///   \cgalParamNBegin{fit_tolerance} a move must improve L by (fit_tolerance * input bounding-box
+///     diagonal)^2; the fit stops when no vertex can; default 1e-4 \cgalParamNEnd
+///   \cgalParamNBegin{max_moves} budget in moves; default unlimited \cgalParamNEnd
+///   \cgalParamNBegin{max_seconds} budget in seconds; default unlimited \cgalParamNEnd
+///   \cgalParamNBegin{lazy_evaluation} thesis 5.6; default true \cgalParamNEnd
+///   \cgalParamNBegin{early_smoothing} thesis 5.6; default true \cgalParamNEnd
+///   \cgalParamNBegin{tangential_smoothing} default true \cgalParamNEnd
+///   \cgalParamNBegin{attract_features} default true \cgalParamNEnd
+///   \cgalParamNBegin{fit_visitor} progress and cancellation, see `Default_deform_to_fit_visitor`
+///     (pass `std::ref(visitor)` to keep its state) \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// Throws std::invalid_argument if `mesh` is not certified in [30, 90], if
+/// `input` has no face or either is not a triangle mesh, or if a parameter
+/// is out of range; `mesh` is then unchanged.
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Deform_to_fit_statistics deform_to_fit(TriangleMesh& mesh, const TriangleMesh& input,
+                                       const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::get_parameter_reference;
+  internal::Deform_to_fit_options o;
+  o.alpha = choose_parameter(get_parameter(np, internal_np::alpha), 0.5);
+  o.drum_subdivisions = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), 2);
+  o.smoothing_steps = choose_parameter(get_parameter(np, internal_np::smoothing_steps), 2);
+  o.tolerance = choose_parameter(get_parameter(np, internal_np::fit_tolerance), 1e-4);
+  o.max_moves = choose_parameter(get_parameter(np, internal_np::max_moves), std::size_t(-1));
+  o.max_seconds = choose_parameter(get_parameter(np, internal_np::max_seconds), 1e300);
+  o.lazy_evaluation = choose_parameter(get_parameter(np, internal_np::lazy_evaluation), true);
+  o.early_smoothing = choose_parameter(get_parameter(np, internal_np::early_smoothing), true);
+  o.tangential_smoothing = choose_parameter(get_parameter(np, internal_np::tangential_smoothing), true);
+  o.attract_features = choose_parameter(get_parameter(np, internal_np::attract_features), true);
+  const int rings = choose_parameter(get_parameter(np, internal_np::quadric_rings), 0);
+  if(!(o.alpha >= 0. && o.alpha <= 1.)) throw std::invalid_argument("alpha must lie in [0, 1]");
+  if(o.drum_subdivisions < 1 || o.drum_subdivisions > 16)
+    throw std::invalid_argument("the drum subdivisions k must lie in [1, 16]");
+  if(rings < 0 || rings > 4) throw std::invalid_argument("the quadric rings r must lie in [0, 4]");
+  if(o.smoothing_steps < 0) throw std::invalid_argument("the smoothing steps must be at least 0");
+  if(!(o.tolerance > 0. && o.tolerance < 1.)) throw std::invalid_argument("the fit tolerance must lie in (0, 1)");
+  if(!(o.max_seconds >= 0.)) throw std::invalid_argument("the time budget must be at least 0");
+  if(num_faces(input) == 0) throw std::invalid_argument("deform_to_fit: the input has no face");
+  if(!is_triangle_mesh(input)) throw std::invalid_argument("deform_to_fit: the input is not a triangle mesh");
+  if(!certify_angle_bounds(mesh).is_certified())
+    throw std::invalid_argument("deform_to_fit needs a mesh certified in [30, 90] degrees");
+
+  Default_deform_to_fit_visitor default_visitor;
+  auto& visitor = choose_parameter(get_parameter_reference(np, internal_np::fit_visitor), default_visitor);
+  const Bbox_3 box = Polygon_mesh_processing::bbox(input);
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  const internal::Closest_triangle<TriangleMesh> closest(input, rings);
+  internal::Deform_to_fit<TriangleMesh, std::remove_reference_t<decltype(visitor)> > optimizer(mesh, closest,
+                                                                                              diagonal, o, visitor);
+  return optimizer.run();
+}
+
+} // namespace Nonobtuse_remeshing
+} // namespace CGAL
+
+#endif // CGAL_NONOBTUSE_REMESHING_DEFORM_TO_FIT_H

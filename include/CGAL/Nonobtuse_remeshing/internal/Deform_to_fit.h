@@ -1,0 +1,624 @@
+// The deform-to-fit optimizer (thesis, chapter 5): per-vertex quadratic
+// programs over the linearized feasible regions, a greedy queue on the
+// improvement, lazy evaluation, early smoothing and constrained Laplacian
+// smoothing. Every move is certified exactly before it is applied, so the
+// mesh satisfies the angle bounds at every moment.
+
+#ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_DEFORM_TO_FIT_IMPL_H
+#define CGAL_NONOBTUSE_REMESHING_INTERNAL_DEFORM_TO_FIT_IMPL_H
+
+#include <CGAL/Nonobtuse_remeshing/internal/angle_predicates.h>
+#include <CGAL/Nonobtuse_remeshing/internal/closest_triangle.h>
+#include <CGAL/Nonobtuse_remeshing/internal/feasible_region.h>
+#include <CGAL/Nonobtuse_remeshing/internal/small_qp.h>
+
+#include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/property_map.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Nonobtuse_remeshing {
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// What `deform_to_fit()` is doing when it calls its visitor.
+enum class Deform_to_fit_stage { optimization, smoothing };
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Statistics of `deform_to_fit()`, also handed to its visitor while it runs.
+struct Deform_to_fit_statistics
+{
+  Deform_to_fit_stage stage = Deform_to_fit_stage::optimization;
+  std::size_t vertices = 0;
+  std::size_t feature_samples = 0;    ///< input vertices and sharp or border edge samples attracting the mesh
+  std::size_t moves = 0;              ///< applied moves, optimization and smoothing
+  std::size_t smoothing_moves = 0;    ///< of which by constrained Laplacian smoothing
+  std::size_t qp_solves = 0;
+  std::size_t qp_fallbacks = 0;       ///< the fast solver reported trouble: CGAL's solver answered
+  std::size_t infeasible_regions = 0; ///< evaluations whose F(v) was empty (the vertex stays)
+  std::size_t shortened_moves = 0;    ///< certified only after halving the step
+  std::size_t rejected_moves = 0;     ///< no certified step within five halvings: not moved
+  std::size_t undone_moves = 0;       ///< certified, but no descent once the closest triangle was updated
+  std::size_t full_updates = 0;
+  std::size_t smoothing_passes = 0;
+  std::size_t intersecting_pairs_found = 0;  ///< self-intersecting face pairs after the fit, before untangling
+  std::size_t intersecting_pairs = 0;        ///< self-intersecting face pairs left at the end
+  std::size_t untangling_moves = 0;
+  double rms_distance = 0.;           ///< root mean square distance of the vertices to the input,
+                                      ///< in % of the input's bounding-box diagonal (updated per phase)
+  bool budget_exhausted = false;
+  bool cancelled = false;
+  double optimization_seconds = 0.;
+  double smoothing_seconds = 0.;
+  double untangling_seconds = 0.;
+  double seconds = 0.;
+};
+
+namespace internal {
+
+struct Deform_to_fit_options
+{
+  double alpha = 0.5;
+  int drum_subdivisions = 2;
+  int smoothing_steps = 2;
+  double tolerance = 1e-4;  // a move must improve L by (tolerance * diagonal)^2
+  std::size_t max_moves = std::size_t(-1);
+  double max_seconds = 1e300;
+  bool lazy_evaluation = true;
+  bool early_smoothing = true;
+  bool tangential_smoothing = true;
+  bool attract_features = true;
+};
+
+template <typename TriangleMesh, typename Visitor>
+class Deform_to_fit
+{
+  using Epick = Exact_predicates_inexact_constructions_kernel;
+  using Point = Epick::Point_3;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  using Clock = std::chrono::steady_clock;
+
+public:
+  Deform_to_fit(TriangleMesh& mesh, const Closest_triangle<TriangleMesh>& input, double diagonal,
+                const Deform_to_fit_options& options, Visitor& visitor)
+    : mesh_(mesh), input_(input), options_(options), visitor_(visitor), diagonal_(diagonal),
+      threshold_(CGAL::square(options.tolerance * diagonal)),
+      index_(get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh))
+  {
+    for(vertex_descriptor v : vertices(mesh_)) {
+      put(index_, v, vertices_.size());
+      vertices_.push_back(v);
+    }
+    const std::size_t n = vertices_.size();
+    hint_.resize(n);
+    for(std::size_t i = 0; i < n; ++i) hint_[i] = input_.closest(mesh_.point(vertices_[i]));
+    target_.resize(n);
+    stamp_.assign(n, 0);
+    dirty_.assign(n, false);
+    stats_.vertices = n;
+    classify_borders();
+    if(options_.attract_features) {
+      double length = 0.;
+      for(auto e : edges(mesh_))
+        length += std::sqrt(CGAL::squared_distance(mesh_.point(source(halfedge(e, mesh_), mesh_)),
+                                                   mesh_.point(target(halfedge(e, mesh_), mesh_))));
+      const double mean_edge = length / double((std::max)(std::size_t(1), std::size_t(num_edges(mesh_))));
+      samples_ = input_.feature_samples(mean_edge);
+    }
+    attracted_begin_.assign(n + 1, 0);
+    stats_.feature_samples = samples_.size();
+  }
+
+  // Optimization first and last, with the smoothing passes in between
+  // (thesis, 5.5); early smoothing (5.6) starts a smoothing pass when the
+  // queue first stalls instead of completing that phase with full updates.
+  Deform_to_fit_statistics run()
+  {
+    start_ = Clock::now();
+    phase_start_ = start_;
+    int smoothing_left = options_.smoothing_steps;
+    evaluate_all();
+    while(!stopped()) {
+      if(pop_and_move()) continue;
+      // Nothing can move with the current evaluations.
+      const bool stale = moved_since_update_ > 0 || std::find(dirty_.begin(), dirty_.end(), true) != dirty_.end();
+      if(smoothing_left > 0 && (!stale || options_.early_smoothing)) {
+        smooth();
+        --smoothing_left;
+        evaluate_all();
+      } else if(stale) {
+        full_update();
+      } else {
+        break;  // converged
+      }
+    }
+    end_phase(Deform_to_fit_stage::optimization);
+    if(!stats_.budget_exhausted && !stats_.cancelled) untangle();
+    update_rms_distance();
+    stats_.seconds = seconds_since(start_);
+    return stats_;
+  }
+
+private:
+  struct Entry
+  {
+    double improvement;
+    std::size_t vertex;
+    std::size_t stamp;
+    bool operator<(const Entry& other) const { return improvement < other.improvement; }
+  };
+
+  // The objective as a sum of terms, in global coordinates:
+  // quadric_weight * Q(x) + sum weight * (x - point)^T metric (x - point).
+  struct Objective
+  {
+    struct Attractor
+    {
+      Eigen::Vector3d point;
+      double weight;
+      Eigen::Matrix3d metric;  // the identity, or the projection on a tangent plane
+    };
+    Quadric quadric;
+    double quadric_weight = 0.;
+    std::vector<Attractor> points;
+
+    double value(const Eigen::Vector3d& x) const
+    {
+      double v = quadric.planes > 0 ? quadric_weight * quadric(x) : 0.;
+      for(const Attractor& t : points) v += t.weight * (x - t.point).dot(t.metric * (x - t.point));
+      return v;
+    }
+
+    // 1/2 x^T G x + a^T x in `frame` coordinates, x_global = origin + s x,
+    // divided by s^2 so that the QP is well conditioned.
+    void local_form(const Local_frame& frame, Eigen::Matrix3d& G, Eigen::Vector3d& a) const
+    {
+      G.setZero();
+      a.setZero();
+      if(quadric.planes > 0) {
+        G += 2. * quadric_weight * quadric.A;
+        a += 2. * quadric_weight * (quadric.A * frame.origin + quadric.b) / frame.scale;
+      }
+      for(const Attractor& t : points) {
+        G += 2. * t.weight * t.metric;
+        a += 2. * t.weight * t.metric * (frame.origin - t.point) / frame.scale;
+      }
+    }
+  };
+
+  static double seconds_since(Clock::time_point t)
+  {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+  }
+
+  bool stopped()
+  {
+    if(stats_.moves >= options_.max_moves || seconds_since(start_) > options_.max_seconds) {
+      stats_.budget_exhausted = true;
+      return true;
+    }
+    if(!visitor_.keep_going(stats_)) {
+      stats_.cancelled = true;
+      return true;
+    }
+    return false;
+  }
+
+  void end_phase(Deform_to_fit_stage stage)
+  {
+    const double s = seconds_since(phase_start_);
+    (stage == Deform_to_fit_stage::optimization ? stats_.optimization_seconds : stats_.smoothing_seconds) += s;
+    phase_start_ = Clock::now();
+  }
+
+  Eigen::Vector3d position(std::size_t i) const
+  {
+    const Point& p = mesh_.point(vertices_[i]);
+    return Eigen::Vector3d(p.x(), p.y(), p.z());
+  }
+
+  // A border cycle of the mesh follows a border of the input when each of its
+  // vertices lies within two of its longest edges of the input's border; its
+  // vertices then fit that border (equation 5.12). Other border cycles (a
+  // hole the initial mesh opened where the input has none) fit the surface
+  // like interior vertices instead of flying to a distant input border.
+  void classify_borders()
+  {
+    on_input_border_.assign(vertices_.size(), false);
+    if(!input_.has_border()) return;
+    std::vector<bool> done(vertices_.size(), false);
+    for(auto h : halfedges(mesh_)) {
+      if(!is_border(h, mesh_) || done[get(index_, target(h, mesh_))]) continue;
+      double longest = 0., farthest = 0.;
+      std::vector<std::size_t> cycle;
+      for(auto c : halfedges_around_face(h, mesh_)) {
+        const std::size_t i = get(index_, target(c, mesh_));
+        cycle.push_back(i);
+        done[i] = true;
+        const Point& p = mesh_.point(target(c, mesh_));
+        longest = (std::max)(longest, std::sqrt(CGAL::squared_distance(p, mesh_.point(source(c, mesh_)))));
+        farthest = (std::max)(farthest, std::sqrt(CGAL::squared_distance(p, input_.closest_on_border(p))));
+      }
+      if(farthest <= 2. * longest)
+        for(std::size_t i : cycle) on_input_border_[i] = true;
+    }
+  }
+
+  // Hands every feature sample of the input to its nearest mesh vertex (a
+  // border sample to the nearest vertex that fits the input's border), as a
+  // contiguous list per vertex; vertices whose list changed become dirty.
+  void attract_features()
+  {
+    if(samples_.empty()) return;
+    using Traits = Search_traits_3<Epick>;
+    using Point_map = typename Pointer_property_map<Point>::type;
+    using Adapter = Search_traits_adapter<std::size_t, Point_map, Traits>;
+    using Distance = Distance_adapter<std::size_t, Point_map, Euclidean_distance<Traits> >;
+    using Search = Orthogonal_k_neighbor_search<Adapter, Distance>;
+    using Tree = typename Search::Tree;
+    std::vector<Point> points;
+    std::vector<std::size_t> everywhere, on_border;
+    points.reserve(vertices_.size());
+    for(std::size_t i = 0; i < vertices_.size(); ++i) {
+      points.push_back(mesh_.point(vertices_[i]));
+      everywhere.push_back(i);
+      if(on_input_border_[i]) on_border.push_back(i);
+    }
+    const Point_map map = make_property_map(points);
+    const Tree all(everywhere.begin(), everywhere.end(), typename Tree::Splitter(), Adapter(map));
+    const Tree border(on_border.begin(), on_border.end(), typename Tree::Splitter(), Adapter(map));
+    std::vector<std::pair<std::size_t, std::size_t> > owner;  // (vertex, sample)
+    owner.reserve(samples_.size());
+    for(std::size_t s = 0; s < samples_.size(); ++s) {
+      const bool at_border = samples_[s].second;
+      if(at_border && on_border.empty()) continue;
+      const Search search(at_border ? border : all, samples_[s].first, 1, 0., true, Distance(map));
+      owner.emplace_back(search.begin()->first, s);
+    }
+    std::sort(owner.begin(), owner.end());
+    std::vector<std::size_t> attracted, begin(vertices_.size() + 1, 0);
+    attracted.reserve(owner.size());
+    for(std::size_t i = 0, j = 0; i < vertices_.size(); ++i) {
+      begin[i] = attracted.size();
+      for(; j < owner.size() && owner[j].first == i; ++j) attracted.push_back(owner[j].second);
+      const bool changed =
+          !std::equal(attracted.begin() + begin[i], attracted.end(), attracted_.begin() + attracted_begin_[i],
+                      attracted_.begin() + attracted_begin_[i + 1]);
+      if(changed) dirty_[i] = true;
+    }
+    begin[vertices_.size()] = attracted.size();
+    attracted_.swap(attracted);
+    attracted_begin_.swap(begin);
+  }
+
+  Objective objective(std::size_t i, bool smoothing_only) const
+  {
+    Objective o;
+    const vertex_descriptor v = vertices_[i];
+    const double beta = smoothing_only ? 1. : 1. - options_.alpha;
+    const double alpha = smoothing_only ? 0. : options_.alpha;
+    // S (equations 5.13-5.14): the one-ring centroid, or the midpoint of the
+    // two border neighbours
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    int count = 0;
+    const bool border_vertex = bool(is_border(v, mesh_));
+    for(auto h : halfedges_around_target(v, mesh_))
+      if(!border_vertex || is_border(h, mesh_) || is_border(opposite(h, mesh_), mesh_)) {
+        const Point& p = mesh_.point(source(h, mesh_));
+        centre += Eigen::Vector3d(p.x(), p.y(), p.z());
+        ++count;
+      }
+    centre /= double((std::max)(count, 1));
+    Eigen::Matrix3d metric = Eigen::Matrix3d::Identity();
+    // D (equations 5.11-5.12): the quadric of the closest input triangle and
+    // its r-ring over its number of planes, or the squared distance to the
+    // input's border. Beyond the thesis, the feature samples owned by the
+    // vertex join D as point terms: they hold tips, creases and border
+    // corners that S would round off. A sample weighs as much as four planes:
+    // with one, the Hausdorff distance of the cow and of the shark at
+    // N = 100 ended above the initial mesh's; with four, 13% and 21% below.
+    const double sample_weight = 4.;
+    if(alpha > 0.) {
+      const std::size_t owned = attracted_begin_[i + 1] - attracted_begin_[i];
+      double w = alpha;
+      if(on_input_border_[i]) {
+        w /= double(1 + owned);
+        const Point b = input_.closest_on_border(mesh_.point(v));
+        o.points.push_back({Eigen::Vector3d(b.x(), b.y(), b.z()), w, Eigen::Matrix3d::Identity()});
+      } else {
+        o.quadric = input_.quadric(hint_[i]);
+        w /= double((std::max)(std::size_t(1), o.quadric.planes + owned));
+        o.quadric_weight = w;
+        // Beyond the thesis: S acts along the input's tangent plane only, so
+        // that it evens the vertices out without pulling the surface inwards.
+        if(options_.tangential_smoothing) {
+          const Eigen::Vector3d n = input_.normal(hint_[i]);
+          metric -= n * n.transpose();
+        }
+      }
+      for(std::size_t j = attracted_begin_[i]; j < attracted_begin_[i + 1]; ++j) {
+        const Point& p = samples_[attracted_[j]].first;
+        o.points.push_back({Eigen::Vector3d(p.x(), p.y(), p.z()), sample_weight * w, Eigen::Matrix3d::Identity()});
+      }
+    }
+    o.points.push_back({centre, beta, metric});
+    return o;
+  }
+
+  // The frame of vertex i's one-ring: centred on the vertex, scaled by its
+  // longest edge.
+  Local_frame frame(std::size_t i) const
+  {
+    Local_frame f;
+    f.origin = position(i);
+    f.scale = 0.;
+    for(vertex_descriptor w : vertices_around_target(halfedge(vertices_[i], mesh_), mesh_)) {
+      const Point& p = mesh_.point(w);
+      f.scale = (std::max)(f.scale, (Eigen::Vector3d(p.x(), p.y(), p.z()) - f.origin).norm());
+    }
+    return f;
+  }
+
+  // Solves vertex i's QP (equation 5.15, or 5.17 when smoothing) over F(v);
+  // returns false when F(v) is empty or cannot be built.
+  bool solve(std::size_t i, bool smoothing_only, Eigen::Vector3d& best, double& improvement)
+  {
+    const Local_frame f = frame(i);
+    region_.clear();
+    if(!(f.scale > 0.) ||
+       !vertex_feasible_region(mesh_, mesh_.points(), vertices_[i], options_.drum_subdivisions, f, region_))
+      return false;
+    const Objective o = objective(i, smoothing_only);
+    o.local_form(f, qp_.G, qp_.a);
+    qp_.normals.clear();
+    qp_.offsets.clear();
+    for(const Half_space& h : region_) qp_.add_constraint(h.normal, h.offset);
+    ++stats_.qp_solves;
+    Qp_result r = solve_small_qp(qp_);
+    if(r.status == Qp_status::trouble) {
+      ++stats_.qp_fallbacks;
+      r = solve_small_qp_reference(qp_);
+    }
+    if(r.status != Qp_status::optimal) {
+      ++stats_.infeasible_regions;
+      return false;
+    }
+    best = f.to_global(r.x);
+    improvement = o.value(f.origin) - o.value(best);  // H(v), equation 5.16
+    return true;
+  }
+
+  void evaluate(std::size_t i)
+  {
+    dirty_[i] = false;
+    double improvement = 0.;
+    Eigen::Vector3d best = position(i);
+    if(!solve(i, false, best, improvement)) improvement = 0.;
+    target_[i] = best;
+    queue_.push({improvement, i, ++stamp_[i]});
+  }
+
+  void evaluate_all()
+  {
+    attract_features();
+    queue_ = std::priority_queue<Entry>();
+    for(std::size_t i = 0; i < vertices_.size(); ++i) evaluate(i);
+    moved_since_update_ = 0;
+    update_rms_distance();
+  }
+
+  // A full update (thesis, 5.6): the feature samples find their nearest
+  // vertex again, and every vertex whose evaluation may be out of date is
+  // evaluated; the others' evaluations are current.
+  void full_update()
+  {
+    ++stats_.full_updates;
+    attract_features();
+    for(std::size_t i = 0; i < vertices_.size(); ++i)
+      if(dirty_[i]) evaluate(i);
+    moved_since_update_ = 0;
+    update_rms_distance();
+  }
+
+  // Takes the best vertex off the queue; moves it, or evaluates it if it was
+  // dirty. Returns false when no vertex improves by more than the threshold.
+  bool pop_and_move()
+  {
+    while(!queue_.empty()) {
+      const Entry top = queue_.top();
+      queue_.pop();
+      if(top.stamp != stamp_[top.vertex]) continue;  // superseded
+      if(dirty_[top.vertex]) {                      // lazy evaluation: only when it matters
+        evaluate(top.vertex);
+        return true;
+      }
+      if(!(top.improvement > threshold_)) {
+        queue_.push(top);
+        return false;
+      }
+      move(top.vertex);
+      return true;
+    }
+    return false;
+  }
+
+  // Every face around vertex i, with i at p, is within [30, 90] exactly.
+  bool certified_at(std::size_t i, const Point& p) const
+  {
+    const vertex_descriptor v = vertices_[i];
+    for(auto h : halfedges_around_target(v, mesh_)) {
+      if(is_border(h, mesh_)) continue;
+      const Point& a = mesh_.point(source(h, mesh_));
+      const Point& b = mesh_.point(target(next(h, mesh_), mesh_));
+      if(!triangle_verdict(p, b, a, bounds_).within_bounds()) return false;
+    }
+    return true;
+  }
+
+  // Moves vertex i towards `target`, halving the step until the faces around
+  // it certify exactly (at most five times); returns whether it moved. With
+  // `check_descent`, a move whose new closest triangle leaves the vertex's
+  // cost no lower than before by the threshold is undone: D changes with the
+  // closest triangle, and without this test a vertex can hop between two
+  // triangles for ever.
+  bool apply(std::size_t i, const Eigen::Vector3d& target, bool check_descent)
+  {
+    const Eigen::Vector3d from = position(i);
+    const Point old_point = mesh_.point(vertices_[i]);
+    Eigen::Vector3d step = target - from;
+    for(int attempt = 0; attempt < 5; ++attempt, step *= 0.5) {
+      const Eigen::Vector3d to = from + step;
+      const Point p(to[0], to[1], to[2]);
+      if(p == old_point) break;  // rounds to no move
+      if(!certified_at(i, p)) continue;
+      const face_descriptor old_hint = hint_[i];
+      const double before = check_descent ? objective(i, false).value(from) : 0.;
+      mesh_.point(vertices_[i]) = p;
+      hint_[i] = input_.closest_near(p, old_hint);
+      if(check_descent && !(objective(i, false).value(to) < before - threshold_)) {
+        mesh_.point(vertices_[i]) = old_point;
+        hint_[i] = old_hint;
+        ++stats_.undone_moves;
+        return false;
+      }
+      if(attempt > 0) ++stats_.shortened_moves;
+      ++stats_.moves;
+      ++moved_since_update_;
+      return true;
+    }
+    ++stats_.rejected_moves;
+    return false;
+  }
+
+  void move(std::size_t i)
+  {
+    if(!apply(i, target_[i], true)) {  // out of the queue until a neighbour moves
+      queue_.push({0., i, ++stamp_[i]});
+      return;
+    }
+    evaluate(i);
+    for(vertex_descriptor w : vertices_around_target(halfedge(vertices_[i], mesh_), mesh_)) {
+      const std::size_t j = get(index_, w);
+      if(options_.lazy_evaluation)
+        dirty_[j] = true;  // evaluated when it reaches the top, or in a full update
+      else
+        evaluate(j);
+    }
+  }
+
+  // Constrained Laplacian smoothing (thesis, 5.5): every vertex once, in
+  // order, towards its smoothing optimum (equation 5.17) within F(v).
+  void smooth()
+  {
+    end_phase(Deform_to_fit_stage::optimization);
+    stats_.stage = Deform_to_fit_stage::smoothing;
+    ++stats_.smoothing_passes;
+    for(std::size_t i = 0; i < vertices_.size() && !stopped(); ++i) {
+      Eigen::Vector3d best;
+      double improvement;
+      if(!solve(i, true, best, improvement) || !(improvement > threshold_)) continue;
+      if(apply(i, best, false)) ++stats_.smoothing_moves;
+    }
+    std::fill(dirty_.begin(), dirty_.end(), false);
+    end_phase(Deform_to_fit_stage::smoothing);
+    stats_.stage = Deform_to_fit_stage::optimization;
+  }
+
+  // Beyond the thesis: where the input is thinner than a cube, the fit can
+  // fold the mesh through itself. The faces of each self-intersecting pair
+  // and the rings around them, wider each round, take constrained smoothing
+  // moves (certified like any other) until no pair is left, for at most
+  // five rounds; what remains is counted.
+  void untangle()
+  {
+    const Clock::time_point start = Clock::now();
+    std::vector<std::pair<face_descriptor, face_descriptor> > pairs;
+    Polygon_mesh_processing::self_intersections(faces(mesh_), mesh_, std::back_inserter(pairs));
+    stats_.intersecting_pairs_found = pairs.size();
+    for(int round = 1; round <= 5 && !pairs.empty(); ++round) {
+      std::vector<bool> chosen(vertices_.size(), false);
+      std::vector<std::size_t> front;
+      for(const auto& p : pairs)
+        for(face_descriptor f : {p.first, p.second})
+          for(vertex_descriptor w : vertices_around_face(halfedge(f, mesh_), mesh_))
+            if(!chosen[get(index_, w)]) {
+              chosen[get(index_, w)] = true;
+              front.push_back(get(index_, w));
+            }
+      std::vector<std::size_t> region = front;
+      for(int ring = 0; ring < round; ++ring) {
+        std::vector<std::size_t> next;
+        for(std::size_t i : front)
+          for(vertex_descriptor w : vertices_around_target(halfedge(vertices_[i], mesh_), mesh_))
+            if(!chosen[get(index_, w)]) {
+              chosen[get(index_, w)] = true;
+              next.push_back(get(index_, w));
+            }
+        region.insert(region.end(), next.begin(), next.end());
+        front.swap(next);
+      }
+      for(int pass = 0; pass < 3; ++pass)
+        for(std::size_t i : region) {
+          Eigen::Vector3d best;
+          double improvement;
+          if(solve(i, true, best, improvement) && improvement > threshold_ && apply(i, best, false))
+            ++stats_.untangling_moves;
+        }
+      pairs.clear();
+      Polygon_mesh_processing::self_intersections(faces(mesh_), mesh_, std::back_inserter(pairs));
+    }
+    stats_.intersecting_pairs = pairs.size();
+    stats_.untangling_seconds = seconds_since(start);
+  }
+
+  void update_rms_distance()
+  {
+    double sum = 0.;
+    for(std::size_t i = 0; i < vertices_.size(); ++i)
+      sum += CGAL::squared_distance(mesh_.point(vertices_[i]), input_.triangle(hint_[i]));
+    stats_.rms_distance = vertices_.empty() ? 0. : 100. * std::sqrt(sum / double(vertices_.size())) / diagonal_;
+  }
+
+  TriangleMesh& mesh_;
+  const Closest_triangle<TriangleMesh>& input_;
+  const Deform_to_fit_options options_;
+  Visitor& visitor_;
+  const double diagonal_;
+  const double threshold_;
+  const Angle_bounds bounds_;
+
+  typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<std::size_t> >::type index_;
+  std::vector<vertex_descriptor> vertices_;
+  std::vector<face_descriptor> hint_;  // closest input triangle
+  std::vector<bool> on_input_border_;
+  std::vector<std::pair<Point, bool> > samples_;  // feature samples, see Closest_triangle
+  std::vector<std::size_t> attracted_;            // sample indices, grouped by nearest vertex
+  std::vector<std::size_t> attracted_begin_;      // vertex i owns attracted_[begin[i], begin[i+1])
+  std::vector<Eigen::Vector3d> target_;
+  std::vector<std::size_t> stamp_;
+  std::vector<bool> dirty_;
+  std::size_t moved_since_update_ = 0;
+  std::priority_queue<Entry> queue_;
+  std::vector<Half_space> region_;
+  Small_qp qp_;
+  Deform_to_fit_statistics stats_;
+  Clock::time_point start_, phase_start_;
+};
+
+} // namespace internal
+} // namespace Nonobtuse_remeshing
+} // namespace CGAL
+
+#endif // CGAL_NONOBTUSE_REMESHING_INTERNAL_DEFORM_TO_FIT_IMPL_H
