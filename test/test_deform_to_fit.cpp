@@ -99,12 +99,14 @@ TEST(DeformToFit, FitsTheSampleMeshes)
     EXPECT_EQ(after.connected_components, before.connected_components);
     EXPECT_EQ(after.euler_characteristic, before.euler_characteristic);
     EXPECT_EQ(after.non_manifold_vertices, 0u);
-    // Self-intersections are counted and untangled, not excluded: where the
-    // input is thinner than a cube the fit can still fold the mesh (one pair
-    // is left on mesh_with_border at N = 60).
+    // The fit introduces no self-intersection: folds it makes where the
+    // input is thin are untangled. (The initial mesh of nefertiti at N = 50
+    // has 31 pairs, coplanar overlapping flaps along the border; they stay
+    // counted, and the fit leaves fewer.)
     EXPECT_EQ(after.self_intersections, s.intersecting_pairs);
     EXPECT_LE(s.intersecting_pairs, s.intersecting_pairs_found);
-    if(report(input, input).self_intersections == 0) EXPECT_LE(after.self_intersections, 2u);
+    EXPECT_LE(after.self_intersections, before.self_intersections);
+    if(before.self_intersections == 0) EXPECT_EQ(after.self_intersections, 0u);
   }
 }
 

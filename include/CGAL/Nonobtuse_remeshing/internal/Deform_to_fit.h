@@ -108,6 +108,7 @@ public:
     stamp_.assign(n, 0);
     dirty_.assign(n, false);
     stats_.vertices = n;
+    for(std::size_t i = 0; i < n; ++i) initial_.push_back(position(i));
     classify_borders();
     if(options_.attract_features) {
       double length = 0.;
@@ -303,9 +304,19 @@ private:
     attracted_begin_.swap(begin);
   }
 
-  Objective objective(std::size_t i, bool smoothing_only) const
+  // What a vertex minimises: L (equation 5.9), S alone (constrained
+  // Laplacian smoothing, equation 5.17), or the distance to its position in
+  // the initial mesh (untangling).
+  enum class Goal { fit, smooth, restore };
+
+  Objective objective(std::size_t i, Goal goal) const
   {
     Objective o;
+    if(goal == Goal::restore) {
+      o.points.push_back({initial_[i], 1., Eigen::Matrix3d::Identity()});
+      return o;
+    }
+    const bool smoothing_only = goal == Goal::smooth;
     const vertex_descriptor v = vertices_[i];
     const double beta = smoothing_only ? 1. : 1. - options_.alpha;
     const double alpha = smoothing_only ? 0. : options_.alpha;
@@ -373,14 +384,14 @@ private:
 
   // Solves vertex i's QP (equation 5.15, or 5.17 when smoothing) over F(v);
   // returns false when F(v) is empty or cannot be built.
-  bool solve(std::size_t i, bool smoothing_only, Eigen::Vector3d& best, double& improvement)
+  bool solve(std::size_t i, Goal goal, Eigen::Vector3d& best, double& improvement)
   {
     const Local_frame f = frame(i);
     region_.clear();
     if(!(f.scale > 0.) ||
        !vertex_feasible_region(mesh_, mesh_.points(), vertices_[i], options_.drum_subdivisions, f, region_))
       return false;
-    const Objective o = objective(i, smoothing_only);
+    const Objective o = objective(i, goal);
     o.local_form(f, qp_.G, qp_.a);
     qp_.normals.clear();
     qp_.offsets.clear();
@@ -405,7 +416,7 @@ private:
     dirty_[i] = false;
     double improvement = 0.;
     Eigen::Vector3d best = position(i);
-    if(!solve(i, false, best, improvement)) improvement = 0.;
+    if(!solve(i, Goal::fit, best, improvement)) improvement = 0.;
     target_[i] = best;
     queue_.push({improvement, i, ++stamp_[i]});
   }
@@ -484,10 +495,10 @@ private:
       if(p == old_point) break;  // rounds to no move
       if(!certified_at(i, p)) continue;
       const face_descriptor old_hint = hint_[i];
-      const double before = check_descent ? objective(i, false).value(from) : 0.;
+      const double before = check_descent ? objective(i, Goal::fit).value(from) : 0.;
       mesh_.point(vertices_[i]) = p;
       hint_[i] = input_.closest_near(p, old_hint);
-      if(check_descent && !(objective(i, false).value(to) < before - threshold_)) {
+      if(check_descent && !(objective(i, Goal::fit).value(to) < before - threshold_)) {
         mesh_.point(vertices_[i]) = old_point;
         hint_[i] = old_hint;
         ++stats_.undone_moves;
@@ -528,7 +539,7 @@ private:
     for(std::size_t i = 0; i < vertices_.size() && !stopped(); ++i) {
       Eigen::Vector3d best;
       double improvement;
-      if(!solve(i, true, best, improvement) || !(improvement > threshold_)) continue;
+      if(!solve(i, Goal::smooth, best, improvement) || !(improvement > threshold_)) continue;
       if(apply(i, best, false)) ++stats_.smoothing_moves;
     }
     std::fill(dirty_.begin(), dirty_.end(), false);
@@ -537,10 +548,12 @@ private:
   }
 
   // Beyond the thesis: where the input is thinner than a cube, the fit can
-  // fold the mesh through itself. The faces of each self-intersecting pair
-  // and the rings around them, wider each round, take constrained smoothing
-  // moves (certified like any other) until no pair is left, for at most
-  // five rounds; what remains is counted.
+  // fold the mesh through itself. The vertices of each self-intersecting
+  // pair and the rings around them, wider each round, take constrained
+  // smoothing moves, or else move back towards their positions in the
+  // initial mesh (constrained and certified like any other move), keeping
+  // only what lowers the number of pairs, for at most five rounds; what
+  // remains is counted.
   void untangle()
   {
     const Clock::time_point start = Clock::now();
@@ -557,6 +570,7 @@ private:
               chosen[get(index_, w)] = true;
               front.push_back(get(index_, w));
             }
+      const std::vector<std::size_t> own = front;
       std::vector<std::size_t> region = front;
       for(int ring = 0; ring < round; ++ring) {
         std::vector<std::size_t> next;
@@ -569,18 +583,50 @@ private:
         region.insert(region.end(), next.begin(), next.end());
         front.swap(next);
       }
-      for(int pass = 0; pass < 3; ++pass)
-        for(std::size_t i : region) {
-          Eigen::Vector3d best;
-          double improvement;
-          if(solve(i, true, best, improvement) && improvement > threshold_ && apply(i, best, false))
-            ++stats_.untangling_moves;
-        }
-      pairs.clear();
-      Polygon_mesh_processing::self_intersections(faces(mesh_), mesh_, std::back_inserter(pairs));
+      // Constrained smoothing of the region, kept unless it adds pairs; if
+      // pairs are left, moves of the pairs' own vertices back towards the
+      // initial mesh, kept only if they remove pairs. What is not kept is
+      // rolled back to the certified state before it.
+      if(untangle_attempt(region, Goal::smooth, pairs, false)) continue;
+      untangle_attempt(own, Goal::restore, pairs, true);
     }
     stats_.intersecting_pairs = pairs.size();
     stats_.untangling_seconds = seconds_since(start);
+  }
+
+  // Moves the vertices of `region` towards `goal` (three passes); keeps the
+  // moves if they leave fewer pairs (or, unless `strictly`, as many) and
+  // updates `pairs`, else rolls them back. Returns whether pairs were removed.
+  bool untangle_attempt(const std::vector<std::size_t>& region, Goal goal,
+                        std::vector<std::pair<face_descriptor, face_descriptor> >& pairs, bool strictly)
+  {
+    std::vector<Point> saved;
+    std::vector<face_descriptor> saved_hints;
+    for(std::size_t i : region) {
+      saved.push_back(mesh_.point(vertices_[i]));
+      saved_hints.push_back(hint_[i]);
+    }
+    std::size_t moves = 0;
+    for(int pass = 0; pass < 3; ++pass)
+      for(std::size_t i : region) {
+        Eigen::Vector3d best;
+        double improvement;
+        if(solve(i, goal, best, improvement) && improvement > threshold_ && apply(i, best, false)) ++moves;
+      }
+    std::vector<std::pair<face_descriptor, face_descriptor> > left;
+    Polygon_mesh_processing::self_intersections(faces(mesh_), mesh_, std::back_inserter(left));
+    if(left.size() < pairs.size() || (!strictly && left.size() == pairs.size())) {
+      const bool removed = left.size() < pairs.size();
+      stats_.untangling_moves += moves;
+      pairs.swap(left);
+      return removed;
+    }
+    stats_.moves -= moves;
+    for(std::size_t j = 0; j < region.size(); ++j) {
+      mesh_.point(vertices_[region[j]]) = saved[j];
+      hint_[region[j]] = saved_hints[j];
+    }
+    return false;
   }
 
   void update_rms_distance()
@@ -606,6 +652,7 @@ private:
   std::vector<std::pair<Point, bool> > samples_;  // feature samples, see Closest_triangle
   std::vector<std::size_t> attracted_;            // sample indices, grouped by nearest vertex
   std::vector<std::size_t> attracted_begin_;      // vertex i owns attracted_[begin[i], begin[i+1])
+  std::vector<Eigen::Vector3d> initial_;  // positions in the mesh as given
   std::vector<Eigen::Vector3d> target_;
   std::vector<std::size_t> stamp_;
   std::vector<bool> dirty_;
