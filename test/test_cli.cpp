@@ -273,6 +273,7 @@ TEST(Cli, RemeshRefusesBadRequestsWithoutWriting)
   EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + out + " -k 0").code, 2);
   EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + out + " --quadric-rings 9").code, 2);
   EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + out + " --fit-tolerance -1").code, 2);
+  EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + out + " --max-moves -1").code, 2);
   EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + out + " --resolution 0").code, 2);
   EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + out + " --signs magic").code, 2);
   EXPECT_EQ(run("remesh " + data("sphere.off")).code, 2);  // no output

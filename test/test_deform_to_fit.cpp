@@ -157,6 +157,16 @@ TEST(DeformToFit, BudgetAndCancellationLeaveACertifiedMesh)
     EXPECT_TRUE(NR::certify_angle_bounds(mesh).is_certified());
   }
   {
+    // a visitor given by value is copied and used as well
+    Mesh mesh = initial;
+    Certifying_visitor visitor;
+    visitor.mesh = &mesh;
+    visitor.cancel_after = 300;
+    const auto s = NR::deform_to_fit(mesh, input, NR::parameters::fit_visitor(visitor));
+    EXPECT_TRUE(s.cancelled);
+    EXPECT_EQ(visitor.calls, 0u);  // the copy was called, not the original
+  }
+  {
     Mesh mesh = initial;
     const auto s = NR::deform_to_fit(mesh, input, NR::parameters::max_seconds(0.));
     EXPECT_TRUE(s.budget_exhausted);

@@ -110,10 +110,10 @@ TEST(FeasibleRegion, PointsStrictlyInsideAreCertified)
   std::uniform_real_distribution<double> uniform(0., 1.);
   std::size_t samples = 0, rejected = 0;
   for(const std::string name : {"sphere.off", "pig.off", "elephant.off", "mesh_with_border.off", "fitted pig.off",
-                                "fitted elephant.off"})
+                                "fitted elephant.off"}) {
+    const Mesh m = name.rfind("fitted ", 0) == 0 ? fitted_mesh(name.substr(7), 40)
+                                                 : initial_mesh(name, name == "sphere.off" ? 30 : 50);
     for(int k : {1, 2, 4}) {
-      const Mesh m = name.rfind("fitted ", 0) == 0 ? fitted_mesh(name.substr(7), 40)
-                                                   : initial_mesh(name, name == "sphere.off" ? 30 : 50);
       for(auto v : m.vertices()) {
         One_ring ring;
         ASSERT_TRUE(one_ring(m, v, k, ring));
@@ -134,6 +134,7 @@ TEST(FeasibleRegion, PointsStrictlyInsideAreCertified)
         }
       }
     }
+  }
   EXPECT_GE(samples, 1000000u);
   EXPECT_EQ(rejected, 0u);
 }

@@ -142,7 +142,7 @@ int remesh_command(int argc, char** argv)
   std::string input_path, output_path, json_path, stop_after = "fit", signs = "patches";
   int resolution = 100, drum_subdivisions = 2, quadric_rings = 0, smoothing_steps = 2;
   double alpha = 0.5, fit_tolerance = 1e-4, max_seconds = 0.;
-  std::size_t max_moves = 0;
+  long long max_moves = 0;
   bool quiet = false;
   po::options_description options("options");
   options.add_options()
@@ -165,7 +165,7 @@ int remesh_command(int argc, char** argv)
      "fit: constrained Laplacian smoothing passes between optimizations")
     ("fit-tolerance", po::value<double>(&fit_tolerance)->default_value(1e-4),
      "fit: stop when no move improves the cost by (tolerance * diagonal)^2")
-    ("max-moves", po::value<std::size_t>(&max_moves), "fit: budget in moves (default: none)")
+    ("max-moves", po::value<long long>(&max_moves), "fit: budget in moves (default: none)")
     ("max-seconds", po::value<double>(&max_seconds), "fit: budget in seconds (default: none)")
     ("no-lazy-evaluation", "fit: re-evaluate the neighbours of a moved vertex at once")
     ("no-early-smoothing", "fit: complete each optimization phase before smoothing")
@@ -195,6 +195,7 @@ int remesh_command(int argc, char** argv)
       throw std::invalid_argument("--smoothing-steps must lie in [0, 100]");
     if(!(fit_tolerance > 0. && fit_tolerance < 1.)) throw std::invalid_argument("--fit-tolerance must lie in (0, 1)");
     if(vm.count("max-seconds") && !(max_seconds >= 0.)) throw std::invalid_argument("--max-seconds must be at least 0");
+    if(vm.count("max-moves") && max_moves < 0) throw std::invalid_argument("--max-moves must be at least 0");
     if(signs != "patches" && signs != "inside-test")
       throw std::invalid_argument("--signs must be patches or inside-test (got '" + signs + "')");
     if(resolution < 1 || resolution > 1024)
@@ -226,13 +227,17 @@ int remesh_command(int argc, char** argv)
     if(stop_after == "fit") {
       Fit_progress progress;
       progress.quiet = quiet;
+      if(!NR::certify_angle_bounds(output).is_certified()) {  // cannot happen: chapter 4's guarantee
+        std::cerr << "nonobtuse-remesh remesh: the initial mesh does not certify; nothing written\n";
+        return int(certification_failed);
+      }
       fit = NR::deform_to_fit(
           output, input,
           NR::parameters::combine(
               NR::parameters::alpha(alpha), NR::parameters::drum_subdivisions(drum_subdivisions),
               NR::parameters::quadric_rings(quadric_rings), NR::parameters::smoothing_steps(smoothing_steps),
               NR::parameters::fit_tolerance(fit_tolerance),
-              NR::parameters::max_moves(vm.count("max-moves") ? max_moves : std::size_t(-1)),
+              NR::parameters::max_moves(vm.count("max-moves") ? std::size_t(max_moves) : std::size_t(-1)),
               NR::parameters::max_seconds(vm.count("max-seconds") ? max_seconds : 1e300),
               NR::parameters::lazy_evaluation(vm.count("no-lazy-evaluation") == 0),
               NR::parameters::early_smoothing(vm.count("no-early-smoothing") == 0),

@@ -64,7 +64,7 @@ struct Default_deform_to_fit_visitor
 /// \cgalNamedParamsEnd
 ///
 /// Throws std::invalid_argument if `mesh` is not certified in [30, 90], if
-/// `input` has no face or either is not a triangle mesh, or if a parameter
+/// `input` has no face, no size or either is not a triangle mesh, or if a parameter
 /// is out of range; `mesh` is then unchanged.
 template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Deform_to_fit_statistics deform_to_fit(TriangleMesh& mesh, const TriangleMesh& input,
@@ -72,7 +72,6 @@ Deform_to_fit_statistics deform_to_fit(TriangleMesh& mesh, const TriangleMesh& i
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  using parameters::get_parameter_reference;
   internal::Deform_to_fit_options o;
   o.alpha = choose_parameter(get_parameter(np, internal_np::alpha), 0.5);
   o.drum_subdivisions = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), 2);
@@ -97,11 +96,13 @@ Deform_to_fit_statistics deform_to_fit(TriangleMesh& mesh, const TriangleMesh& i
   if(!certify_angle_bounds(mesh).is_certified())
     throw std::invalid_argument("deform_to_fit needs a mesh certified in [30, 90] degrees");
 
-  Default_deform_to_fit_visitor default_visitor;
-  auto& visitor = choose_parameter(get_parameter_reference(np, internal_np::fit_visitor), default_visitor);
   const Bbox_3 box = Polygon_mesh_processing::bbox(input);
   const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
                                     CGAL::square(box.zmax() - box.zmin()));
+  if(!(diagonal > 0.)) throw std::invalid_argument("deform_to_fit: the input's bounding box has no size");
+  // a visitor given by value is copied, one given with std::ref is used in place
+  auto given = choose_parameter(get_parameter(np, internal_np::fit_visitor), Default_deform_to_fit_visitor());
+  auto& visitor = internal::visitor_reference(given);
   const internal::Closest_triangle<TriangleMesh> closest(input, rings);
   internal::Deform_to_fit<TriangleMesh, std::remove_reference_t<decltype(visitor)> > optimizer(mesh, closest,
                                                                                               diagonal, o, visitor);

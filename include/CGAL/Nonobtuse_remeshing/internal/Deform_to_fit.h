@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <queue>
 #include <utility>
@@ -66,6 +67,11 @@ struct Deform_to_fit_statistics
 };
 
 namespace internal {
+
+template <typename Visitor>
+Visitor& visitor_reference(Visitor& v) { return v; }
+template <typename Visitor>
+Visitor& visitor_reference(std::reference_wrapper<Visitor>& v) { return v.get(); }
 
 struct Deform_to_fit_options
 {
@@ -138,6 +144,7 @@ public:
       if(smoothing_left > 0 && (!stale || options_.early_smoothing)) {
         smooth();
         --smoothing_left;
+        if(stopped()) break;
         evaluate_all();
       } else if(stale) {
         full_update();
@@ -560,7 +567,7 @@ private:
     std::vector<std::pair<face_descriptor, face_descriptor> > pairs;
     Polygon_mesh_processing::self_intersections(faces(mesh_), mesh_, std::back_inserter(pairs));
     stats_.intersecting_pairs_found = pairs.size();
-    for(int round = 1; round <= 5 && !pairs.empty(); ++round) {
+    for(int round = 1; round <= 5 && !pairs.empty() && !stats_.budget_exhausted && !stats_.cancelled; ++round) {
       std::vector<bool> chosen(vertices_.size(), false);
       std::vector<std::size_t> front;
       for(const auto& p : pairs)
@@ -611,6 +618,7 @@ private:
       for(std::size_t i : region) {
         Eigen::Vector3d best;
         double improvement;
+        if(stopped()) break;
         if(solve(i, goal, best, improvement) && improvement > threshold_ && apply(i, best, false)) ++moves;
       }
     std::vector<std::pair<face_descriptor, face_descriptor> > left;

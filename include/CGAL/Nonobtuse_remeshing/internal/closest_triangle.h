@@ -157,7 +157,8 @@ public:
       put(feature, target(h, input_), true);
       const Point& a = input_.point(source(h, input_));
       const Point& b = input_.point(target(h, input_));
-      const int pieces = int(std::ceil(std::sqrt(CGAL::squared_distance(a, b)) / spacing));
+      const double length = std::sqrt(CGAL::squared_distance(a, b));
+      const int pieces = int((std::min)(std::ceil(length / spacing), 1e6));
       for(int i = 1; i < pieces; ++i) along.emplace_back(a + (b - a) * (double(i) / pieces), on_border);
     }
     for(auto v : vertices(input_))
