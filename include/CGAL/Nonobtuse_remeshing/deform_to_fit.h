@@ -72,17 +72,17 @@ Deform_to_fit_statistics deform_to_fit(TriangleMesh& mesh, const TriangleMesh& i
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  internal::Deform_to_fit_options o;
-  o.alpha = choose_parameter(get_parameter(np, internal_np::alpha), 0.5);
-  o.drum_subdivisions = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), 2);
-  o.smoothing_steps = choose_parameter(get_parameter(np, internal_np::smoothing_steps), 2);
-  o.tolerance = choose_parameter(get_parameter(np, internal_np::fit_tolerance), 1e-4);
-  o.max_moves = choose_parameter(get_parameter(np, internal_np::max_moves), std::size_t(-1));
-  o.max_seconds = choose_parameter(get_parameter(np, internal_np::max_seconds), 1e300);
-  o.lazy_evaluation = choose_parameter(get_parameter(np, internal_np::lazy_evaluation), true);
-  o.early_smoothing = choose_parameter(get_parameter(np, internal_np::early_smoothing), true);
-  o.tangential_smoothing = choose_parameter(get_parameter(np, internal_np::tangential_smoothing), true);
-  o.attract_features = choose_parameter(get_parameter(np, internal_np::attract_features), true);
+  internal::Deform_to_fit_options o;  // its members hold the defaults
+  o.alpha = choose_parameter(get_parameter(np, internal_np::alpha), o.alpha);
+  o.drum_subdivisions = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), o.drum_subdivisions);
+  o.smoothing_steps = choose_parameter(get_parameter(np, internal_np::smoothing_steps), o.smoothing_steps);
+  o.tolerance = choose_parameter(get_parameter(np, internal_np::fit_tolerance), o.tolerance);
+  o.max_moves = choose_parameter(get_parameter(np, internal_np::max_moves), o.max_moves);
+  o.max_seconds = choose_parameter(get_parameter(np, internal_np::max_seconds), o.max_seconds);
+  o.lazy_evaluation = choose_parameter(get_parameter(np, internal_np::lazy_evaluation), o.lazy_evaluation);
+  o.early_smoothing = choose_parameter(get_parameter(np, internal_np::early_smoothing), o.early_smoothing);
+  o.tangential_smoothing = choose_parameter(get_parameter(np, internal_np::tangential_smoothing), o.tangential_smoothing);
+  o.attract_features = choose_parameter(get_parameter(np, internal_np::attract_features), o.attract_features);
   const int rings = choose_parameter(get_parameter(np, internal_np::quadric_rings), 0);
   if(!(o.alpha >= 0. && o.alpha <= 1.)) throw std::invalid_argument("alpha must lie in [0, 1]");
   if(o.drum_subdivisions < 1 || o.drum_subdivisions > 16)

@@ -127,11 +127,10 @@ public:
     }
     Quadric q;
     for(face_descriptor g : chosen) {
-      const Epick::Triangle_3 t = triangle(g);
-      if(t.is_degenerate()) continue;
-      const Epick::Vector_3 n = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
-      const Eigen::Vector3d unit = Eigen::Vector3d(n.x(), n.y(), n.z()).normalized();
-      q.add_plane(unit, -unit.dot(Eigen::Vector3d(t[0].x(), t[0].y(), t[0].z())));
+      const Eigen::Vector3d unit = normal(g);
+      if(unit.isZero()) continue;  // degenerate: no plane
+      const Point& p = input_.point(target(halfedge(g, input_), input_));
+      q.add_plane(unit, -unit.dot(Eigen::Vector3d(p.x(), p.y(), p.z())));
     }
     return q;
   }
