@@ -264,6 +264,43 @@ TEST(Cli, RemeshFitsByDefault)
   EXPECT_EQ(c.err.find("fit: "), std::string::npos);
 }
 
+// The valence stage runs between init and fit; --stop-after valence stops
+// after it, --no-valence-cleanup skips it; the JSON has Table 7.1's counts.
+TEST(Cli, RemeshCleansValencesBeforeTheFit)
+{
+  const std::string folder = scratch();
+  const std::string out = folder + "/valence.off";
+  const Outcome a = run("remesh " + data("mesh_with_border.off") + " -o " + out +
+                        " -N 40 --stop-after valence --json " + folder + "/valence.json");
+  ASSERT_EQ(a.code, 0) << a.err;
+  EXPECT_NE(a.out.find("valence (bad-valence removal"), std::string::npos);
+  EXPECT_EQ(a.out.find("fit ("), std::string::npos);
+  Mesh mesh;
+  NR::read_triangle_mesh(out, mesh);
+  EXPECT_TRUE(NR::certify_angle_bounds(mesh).is_certified());
+  const auto j = nlohmann::json::parse(slurp(folder + "/valence.json"));
+  EXPECT_EQ(j["valence"]["after"]["total"], NR::count_bad_valences(mesh).total());
+  EXPECT_EQ(j["valence"]["vertices_after"], num_vertices(mesh));
+  EXPECT_LE(10 * j["valence"]["after"]["total"].get<std::size_t>(), j["valence"]["before"]["total"].get<std::size_t>());
+  EXPECT_GT(j["valence"]["splits"].get<std::size_t>(), 0u);
+  EXPECT_EQ(j["output_report"]["topology"]["border_cycles"], j["init"]["borders_out"]);
+
+  const Outcome b = run("remesh " + data("mesh_with_border.off") + " -o " + out + " -N 40 --stop-after valence" +
+                        " --no-vertex-split --json " + folder + "/removal.json");
+  ASSERT_EQ(b.code, 0) << b.err;
+  const auto r = nlohmann::json::parse(slurp(folder + "/removal.json"));
+  EXPECT_EQ(r["valence"]["splits"], 0);
+  EXPECT_GT(r["valence"]["after"]["total"].get<std::size_t>(), j["valence"]["after"]["total"].get<std::size_t>());
+
+  const Outcome c = run("remesh " + data("mesh_with_border.off") + " -o " + out + " -N 40 --no-valence-cleanup" +
+                        " --max-moves 10 --quiet --json " + folder + "/none.json");
+  ASSERT_EQ(c.code, 0) << c.err;
+  EXPECT_FALSE(nlohmann::json::parse(slurp(folder + "/none.json")).contains("valence"));
+  EXPECT_EQ(run("remesh " + data("mesh_with_border.off") + " -o " + out + " --stop-after valence --no-valence-cleanup")
+                .code,
+            2);
+}
+
 TEST(Cli, RemeshRefusesBadRequestsWithoutWriting)
 {
   const std::string folder = scratch();

@@ -4,6 +4,7 @@
 //
 // The package lives in namespace CGAL::Nonobtuse_remeshing. Stages available:
 //   nonobtuse_marching_cubes()  the initial mesh (thesis, chapter 4)
+//   remove_bad_valence_vertices()  bad valences out, by removal and split (5.7)
 //   deform_to_fit()         the fit with constrained smoothing (chapter 5)
 //   certify_angle_bounds()  exact certification of the angle bounds
 //   quality_report()        angles, valences, topology, defects, distances
@@ -17,6 +18,7 @@
 #include <CGAL/Nonobtuse_remeshing/quality_report.h>
 #include <CGAL/Nonobtuse_remeshing/mesh_io.h>
 #include <CGAL/Nonobtuse_remeshing/nonobtuse_marching_cubes.h>
+#include <CGAL/Nonobtuse_remeshing/remove_bad_valence_vertices.h>
 #include <CGAL/Nonobtuse_remeshing/deform_to_fit.h>
 
 #endif // CGAL_NONOBTUSE_REMESHING_H

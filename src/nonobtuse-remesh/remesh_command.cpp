@@ -1,4 +1,4 @@
-// nonobtuse-remesh remesh INPUT -o OUTPUT [--resolution N] [--stop-after init|fit]
+// nonobtuse-remesh remesh INPUT -o OUTPUT [--resolution N] [--stop-after init|valence|fit]
 //                  [--signs patches|inside-test] [fit options] [--json FILE]
 
 #include "cli.h"
@@ -9,6 +9,7 @@
 #include <CGAL/Nonobtuse_remeshing/mesh_io.h>
 #include <CGAL/Nonobtuse_remeshing/nonobtuse_marching_cubes.h>
 #include <CGAL/Nonobtuse_remeshing/quality_report.h>
+#include <CGAL/Nonobtuse_remeshing/remove_bad_valence_vertices.h>
 
 #include <chrono>
 #include <fstream>
@@ -64,6 +65,56 @@ void print_initial_mesh(std::ostream& out, const NR::Marching_cubes_result& r)
       << r.seconds << " s\n";
   if(r.degenerate_input_triangles > 0)
     out << "  note: " << r.degenerate_input_triangles << " degenerate input triangle(s) ignored\n";
+}
+
+json valence_counts_json(const NR::Valence_counts& c)
+{
+  return {{"v2", c.valence_2},
+          {"v3", c.valence_3()},
+          {"v3_border", c.border_valence_3},
+          {"v3_interior", c.interior_valence_3},
+          {"int_v4", c.interior_valence_4},
+          {"int_above_11", c.interior_valence_above_11},
+          {"total", c.total()}};
+}
+
+json valence_json(const NR::Bad_valence_removal_statistics& s)
+{
+  return {{"before", valence_counts_json(s.before)},
+          {"after", valence_counts_json(s.after)},
+          {"vertices_before", s.vertices_before},
+          {"vertices_after", s.vertices_after},
+          {"border_valence_2_discarded", s.border_valence_2_discarded},
+          {"interior_valence_3_discarded", s.interior_valence_3_discarded},
+          {"interior_valence_4_discarded", s.interior_valence_4_discarded},
+          {"interior_valence_4_collapsed", s.interior_valence_4_collapsed},
+          {"border_valence_3_discarded", s.border_valence_3_discarded},
+          {"border_valence_3_collapsed", s.border_valence_3_collapsed},
+          {"border_teeth_removed", s.border_teeth_removed},
+          {"splits", s.splits},
+          {"refused_by_certification", s.refused},
+          {"rounds", s.rounds},
+          {"seconds", s.seconds}};
+}
+
+void print_valence(std::ostream& out, const NR::Bad_valence_removal_statistics& s)
+{
+  auto counts = [](const NR::Valence_counts& c) {
+    return "v2 " + std::to_string(c.valence_2) + ", v3 " + std::to_string(c.valence_3()) + " (border " +
+           std::to_string(c.border_valence_3) + "), int-v4 " + std::to_string(c.interior_valence_4) +
+           ", int-v12+ " + std::to_string(c.interior_valence_above_11);
+  };
+  out << std::setprecision(3) << "valence (bad-valence removal and vertex split, " << s.vertices_before << " -> "
+      << s.vertices_after << " vertices):\n"
+      << "  before: " << counts(s.before) << "\n"
+      << "  after:  " << counts(s.after) << "\n"
+      << "  discarded: border v2 " << s.border_valence_2_discarded << ", interior v3 "
+      << s.interior_valence_3_discarded << ", interior v4 " << s.interior_valence_4_discarded << ", border v3 "
+      << s.border_valence_3_discarded << "; collapsed: interior v4 " << s.interior_valence_4_collapsed
+      << ", border v3 " << s.border_valence_3_collapsed << "; border teeth " << s.border_teeth_removed
+      << "; splits " << s.splits << "\n"
+      << "  refused by the exact certification " << s.refused << ", rounds " << s.rounds << ", " << s.seconds
+      << " s\n";
 }
 
 json fit_json(const NR::Deform_to_fit_statistics& s)
@@ -153,7 +204,9 @@ int remesh_command(int argc, char** argv)
     ("resolution,N", po::value<int>(&resolution)->default_value(100),
      "Marching Cubes cubes along the longest side of the input's bounding box")
     ("stop-after", po::value<std::string>(&stop_after)->default_value("fit"),
-     "last stage to run: init or fit")
+     "last stage to run: init, valence or fit")
+    ("no-valence-cleanup", "skip the removal of bad-valence vertices between init and fit")
+    ("no-vertex-split", "valence: removal only, as in the thesis (no vertex splits)")
     ("signs", po::value<std::string>(&signs)->default_value("patches"),
      "corner signs: patches (open inputs too) or inside-test (closed inputs)")
     ("alpha", po::value<double>(&alpha)->default_value(0.5), "fit: weight of the distance term, in [0, 1]")
@@ -177,16 +230,20 @@ int remesh_command(int argc, char** argv)
   positional.add("input", 1);
   po::variables_map vm;
   int exit_code = success;
-  if(!parse_options("remesh", "INPUT -o OUTPUT [--resolution N] [--stop-after init|fit] [options]\n\n"
+  if(!parse_options("remesh", "INPUT -o OUTPUT [--resolution N] [--stop-after init|valence|fit] [options]\n\n"
                     "Remeshes INPUT into a mesh whose angles all lie in [30, 90] degrees, certified\n"
-                    "exactly on the written file. Stages: init (nonobtuse Marching Cubes), fit\n"
-                    "(deform-to-fit with constrained Laplacian smoothing).",
+                    "exactly on the written file. Stages: init (nonobtuse Marching Cubes), valence\n"
+                    "(removal of bad-valence vertices, vertex splits), fit (deform-to-fit with\n"
+                    "constrained Laplacian smoothing).",
                     options, positional, argc, argv, vm, exit_code))
     return exit_code;
 
   return run_guarded("remesh", [&]() {
-    if(stop_after != "init" && stop_after != "fit")
-      throw std::invalid_argument("--stop-after must be one of: init, fit (got '" + stop_after + "')");
+    if(stop_after != "init" && stop_after != "valence" && stop_after != "fit")
+      throw std::invalid_argument("--stop-after must be one of: init, valence, fit (got '" + stop_after + "')");
+    const bool valence_cleanup = vm.count("no-valence-cleanup") == 0;
+    if(stop_after == "valence" && !valence_cleanup)
+      throw std::invalid_argument("--stop-after valence contradicts --no-valence-cleanup");
     if(!(alpha >= 0. && alpha <= 1.)) throw std::invalid_argument("--alpha must lie in [0, 1]");
     if(drum_subdivisions < 1 || drum_subdivisions > 16)
       throw std::invalid_argument("--drum-subdivisions must lie in [1, 16]");
@@ -223,14 +280,23 @@ int remesh_command(int argc, char** argv)
                           std::to_string(resolution) + ": the initial mesh is empty");
     print_initial_mesh(std::cout, init);
 
+    if(!NR::certify_angle_bounds(output).is_certified()) {  // cannot happen: chapter 4's guarantee
+      std::cerr << "nonobtuse-remesh remesh: the initial mesh does not certify; nothing written\n";
+      return int(certification_failed);
+    }
+    NR::Bad_valence_removal_statistics valence;
+    if(stop_after != "init" && valence_cleanup) {
+      valence = NR::remove_bad_valence_vertices(
+          output, NR::parameters::combine(NR::parameters::vertex_split(vm.count("no-vertex-split") == 0),
+                                          NR::parameters::drum_subdivisions(drum_subdivisions)));
+      output.collect_garbage();
+      print_valence(std::cout, valence);
+    }
+
     NR::Deform_to_fit_statistics fit;
     if(stop_after == "fit") {
       Fit_progress progress;
       progress.quiet = quiet;
-      if(!NR::certify_angle_bounds(output).is_certified()) {  // cannot happen: chapter 4's guarantee
-        std::cerr << "nonobtuse-remesh remesh: the initial mesh does not certify; nothing written\n";
-        return int(certification_failed);
-      }
       fit = NR::deform_to_fit(
           output, input,
           NR::parameters::combine(
@@ -277,6 +343,7 @@ int remesh_command(int argc, char** argv)
       j["input"] = input_path;
       j["output"] = output_path;
       j["init"] = initial_mesh_json(init);
+      if(stop_after != "init" && valence_cleanup) j["valence"] = valence_json(valence);
       if(stop_after == "fit") j["fit"] = fit_json(fit);
       j["output_report"] = report_to_json(output_path, report, {});
       write_json_atomically(json_path, j);

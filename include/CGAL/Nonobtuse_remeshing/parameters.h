@@ -38,7 +38,8 @@ namespace internal_np {
   X(early_smoothing_t, early_smoothing)   /* thesis 5.6 */                      \
   X(tangential_smoothing_t, tangential_smoothing) /* S along the input only */  \
   X(attract_features_t, attract_features) /* input tips and creases hold */     \
-  X(fit_visitor_t, fit_visitor)           /* progress and cancellation */
+  X(fit_visitor_t, fit_visitor)           /* progress and cancellation */      \
+  X(vertex_split_t, vertex_split)         /* splits after removal */
 
 #define CGAL_NONOBTUSE_DECLARE_TAG(TAG, NAME) enum TAG { NAME };
 CGAL_NONOBTUSE_TAGS(CGAL_NONOBTUSE_DECLARE_TAG)

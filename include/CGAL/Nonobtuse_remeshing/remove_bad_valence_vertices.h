@@ -1,0 +1,78 @@
+// Removal of bad-valence vertices before deform-to-fit (thesis, section 5.7),
+// and vertex splits for those that removal cannot reach (its chapter 8).
+
+#ifndef CGAL_NONOBTUSE_REMESHING_REMOVE_BAD_VALENCE_VERTICES_H
+#define CGAL_NONOBTUSE_REMESHING_REMOVE_BAD_VALENCE_VERTICES_H
+
+#include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
+#include <CGAL/Nonobtuse_remeshing/internal/Bad_valence_removal.h>
+#include <CGAL/Nonobtuse_remeshing/parameters.h>
+
+#include <CGAL/boost/graph/helpers.h>
+
+#include <chrono>
+#include <stdexcept>
+
+namespace CGAL {
+namespace Nonobtuse_remeshing {
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Removes bad-valence vertices from `mesh`, whose angles must lie in
+/// [30, 90] degrees (the initial mesh's do), as the thesis's section 5.7
+/// does before the fit: first border vertices of valence 2 and interior ones
+/// of valence 3, then interior vertices of valence 4, then border vertices of
+/// valence 3. Each is discarded and its ring retriangulated, or its edge to a
+/// neighbour collapsed to the point of the feasible region F(u, v) closest to
+/// the edge's midpoint (equation 5.18), under the neighbour valences of the
+/// thesis's Figure 5.6. Then, beyond the thesis, each remaining bad vertex
+/// raises its valence by splitting interior neighbours of valence 6 or more
+/// (both halves keep 5 or more), the two new positions found by alternating
+/// QPs in their feasible regions. Removal and split alternate while they
+/// lower the number of bad vertices.
+///
+/// Every operation keeps the mesh manifold with the same Euler
+/// characteristic, borders and components (collapses obey the link
+/// condition), and is applied only when its new faces certify exactly in
+/// [30, 90] degrees and keep their orientation: the mesh is certified at
+/// every moment. Removed elements may leave garbage in a `Surface_mesh`
+/// (call `collect_garbage()`).
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_split} split after removal; default true \cgalParamNEnd
+///   \cgalParamNBegin{drum_subdivisions} k of the feasible regions, in [1, 16]; default 2 \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map} default: the mesh's \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// Throws std::invalid_argument, leaving `mesh` unchanged, if `mesh` is not a
+/// triangle mesh certified in [30, 90] degrees or k is out of range.
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Bad_valence_removal_statistics remove_bad_valence_vertices(TriangleMesh& mesh,
+                                                           const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const auto start = std::chrono::steady_clock::now();
+  const bool split = choose_parameter(get_parameter(np, internal_np::vertex_split), true);
+  const int k = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), 2);
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_property_map(CGAL::vertex_point, mesh));
+  if(k < 1 || k > 16) throw std::invalid_argument("the drum subdivisions k must lie in [1, 16]");
+  if(!is_triangle_mesh(mesh)) throw std::invalid_argument("remove_bad_valence_vertices: not a triangle mesh");
+  if(!certify_angle_bounds(mesh, CGAL::parameters::vertex_point_map(vpm)).is_certified())
+    throw std::invalid_argument("remove_bad_valence_vertices needs a mesh certified in [30, 90] degrees");
+
+  Bad_valence_removal_statistics stats;
+  stats.before = count_bad_valences(mesh);
+  stats.vertices_before = vertices(mesh).size();
+  internal::Bad_valence_removal<TriangleMesh, std::remove_const_t<decltype(vpm)> > removal(mesh, vpm, k, split, stats);
+  removal.run();
+  stats.after = count_bad_valences(mesh);
+  stats.vertices_after = vertices(mesh).size();
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return stats;
+}
+
+} // namespace Nonobtuse_remeshing
+} // namespace CGAL
+
+#endif // CGAL_NONOBTUSE_REMESHING_REMOVE_BAD_VALENCE_VERTICES_H
