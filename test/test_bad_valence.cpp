@@ -183,36 +183,36 @@ Mesh border_valence_3(double y)
                    {{0, 3, 2}, {0, 2, 1}, {3, 4, 2}, {2, 5, 1}});
 }
 
+// Removes v = (0, 0) from border_valence_3(y): 5 vertices and 3 faces are
+// left, certified with the same topology.
+NR::Bad_valence_removal_statistics remove_border_valence_3(double y)
+{
+  const Mesh before = border_valence_3(y);
+  Mesh mesh = before;
+  EXPECT_TRUE(NR::certify_angle_bounds(mesh).is_certified());
+  NR::Bad_valence_removal_statistics stats;
+  Removal removal(mesh, mesh.points(), 2, true, stats);
+  EXPECT_TRUE(removal.remove(vertex_at(mesh, Point(0, 0, 0))));
+  expect_kept(before, mesh);
+  EXPECT_EQ(num_vertices(mesh), 5u);
+  EXPECT_EQ(num_faces(mesh), 3u);
+  return stats;
+}
+
 } // namespace
 
 TEST(BadValence, CaseE_BorderValence3IsDiscarded)
 {
-  const Mesh before = border_valence_3(1.);
-  Mesh mesh = before;
-  ASSERT_TRUE(NR::certify_angle_bounds(mesh).is_certified());
-  NR::Bad_valence_removal_statistics stats;
-  Removal removal(mesh, mesh.points(), 2, true, stats);
-  EXPECT_TRUE(removal.remove(vertex_at(mesh, Point(0, 0, 0))));
+  const NR::Bad_valence_removal_statistics stats = remove_border_valence_3(1.);
   EXPECT_EQ(stats.border_valence_3_discarded, 1u);
-  expect_kept(before, mesh);
-  EXPECT_EQ(num_vertices(mesh), 5u);
-  EXPECT_EQ(num_faces(mesh), 3u);
 }
 
 TEST(BadValence, CaseF_BorderValence3Collapses)
 {
-  const Mesh before = border_valence_3(0.8);
-  Mesh mesh = before;
-  ASSERT_TRUE(NR::certify_angle_bounds(mesh).is_certified());
-  NR::Bad_valence_removal_statistics stats;
-  Removal removal(mesh, mesh.points(), 2, true, stats);
-  EXPECT_TRUE(removal.remove(vertex_at(mesh, Point(0, 0, 0))));
+  const NR::Bad_valence_removal_statistics stats = remove_border_valence_3(0.8);
   EXPECT_EQ(stats.border_valence_3_discarded, 0u);
   EXPECT_EQ(stats.border_valence_3_collapsed, 1u);
   EXPECT_GE(stats.refused, 1u);
-  expect_kept(before, mesh);
-  EXPECT_EQ(num_vertices(mesh), 5u);
-  EXPECT_EQ(num_faces(mesh), 3u);
 }
 
 // The split: the centre of a flat regular hexagon (valence 6) splits into
@@ -253,20 +253,6 @@ TEST(BadValence, RefusesAnUncertifiedMesh)
                std::invalid_argument);
 }
 
-namespace {
-
-Mesh written_and_reread(const Mesh& mesh, const std::string& name)
-{
-  const std::string path = ::testing::TempDir() + "valence_" + std::to_string(::getpid()) + "_" + name;
-  NR::write_mesh_atomically(path, mesh);
-  Mesh reread;
-  NR::read_triangle_mesh(path, reread);
-  std::remove(path.c_str());
-  return reread;
-}
-
-} // namespace
-
 // The initial meshes of the shipped samples at N = 40: the result, re-read
 // from the written file, certifies, is manifold with the same topology, and
 // has at most 10% of the bad vertices left (the thesis's removal alone
@@ -293,7 +279,7 @@ TEST(BadValence, InitialMeshesOfTheSamples)
     Mesh mesh = initial;
     const NR::Bad_valence_removal_statistics s = NR::remove_bad_valence_vertices(mesh);
     mesh.collect_garbage();
-    const Mesh reread = written_and_reread(mesh, name);
+    const Mesh reread = nonobtuse_test::written_and_reread(mesh, std::string("valence_") + name);
     EXPECT_EQ(NR::count_bad_valences(reread).total(), s.after.total());
     EXPECT_EQ(num_vertices(reread), s.vertices_after);
     EXPECT_LE(10 * s.after.total(), s.before.total());

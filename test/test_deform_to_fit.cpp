@@ -31,18 +31,6 @@ Mesh initial_mesh(const Mesh& input, int resolution)
   return output;
 }
 
-// Writes `mesh` as the tool does and reads it back: what the checks see is
-// the file.
-Mesh written_and_reread(const Mesh& mesh, const std::string& name)
-{
-  const std::string path = ::testing::TempDir() + "fit_" + std::to_string(::getpid()) + "_" + name;
-  NR::write_mesh_atomically(path, mesh);
-  Mesh reread;
-  NR::read_triangle_mesh(path, reread);
-  std::remove(path.c_str());
-  return reread;
-}
-
 NR::Quality_report report(const Mesh& mesh, const Mesh& input)
 {
   return NR::quality_report(mesh, &input, NR::parameters::maximum_self_intersections(std::size_t(50)));
@@ -82,7 +70,7 @@ TEST(DeformToFit, FitsTheSampleMeshes)
     Mesh mesh = initial_mesh(input, c.resolution);
     const NR::Quality_report before = report(mesh, input);
     const NR::Deform_to_fit_statistics s = NR::deform_to_fit(mesh, input);
-    const Mesh fitted = written_and_reread(mesh, c.name);
+    const Mesh fitted = nonobtuse_test::written_and_reread(mesh, std::string("fit_") + c.name);
     const NR::Quality_report after = report(fitted, input);
     std::cout << "[ measured ] " << c.name << " N=" << c.resolution << ": " << s.vertices << " vertices, "
               << s.moves << " moves, " << s.qp_solves << " QP solves, " << s.seconds << " s; Hausdorff "

@@ -7,7 +7,11 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Nonobtuse_remeshing/mesh_io.h>
 
+#include <gtest/gtest.h>
+
+#include <cstdio>
 #include <string>
+#include <unistd.h>
 
 namespace nonobtuse_test {
 
@@ -22,6 +26,18 @@ inline Mesh load(const std::string& name)
   Mesh mesh;
   CGAL::Nonobtuse_remeshing::read_triangle_mesh(data(name), mesh);
   return mesh;
+}
+
+// Writes `mesh` as the tool does and reads it back: what the checks see is
+// the file.
+inline Mesh written_and_reread(const Mesh& mesh, const std::string& name)
+{
+  const std::string path = ::testing::TempDir() + std::to_string(::getpid()) + "_" + name;
+  CGAL::Nonobtuse_remeshing::write_mesh_atomically(path, mesh);
+  Mesh reread;
+  CGAL::Nonobtuse_remeshing::read_triangle_mesh(path, reread);
+  std::remove(path.c_str());
+  return reread;
 }
 
 } // namespace nonobtuse_test

@@ -28,13 +28,13 @@ namespace Nonobtuse_remeshing {
 /// raises its valence by splitting interior neighbours of valence 6 or more
 /// (both halves keep 5 or more), the two new positions found by alternating
 /// QPs in their feasible regions. Removal and split alternate while they
-/// lower the number of bad vertices.
+/// change the mesh, at most 16 rounds.
 ///
 /// Every operation keeps the mesh manifold with the same Euler
 /// characteristic, borders and components (collapses obey the link
 /// condition), and is applied only when its new faces certify exactly in
-/// [30, 90] degrees and keep their orientation: the mesh is certified at
-/// every moment. Removed elements may leave garbage in a `Surface_mesh`
+/// [30, 90] degrees (and keep their orientation, tested in double): the mesh
+/// is certified at every moment. Removed elements may leave garbage in a `Surface_mesh`
 /// (call `collect_garbage()`).
 ///
 /// \cgalNamedParamsBegin

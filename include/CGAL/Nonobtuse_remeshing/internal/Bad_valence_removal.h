@@ -153,7 +153,8 @@ private:
   bool edge_exists(vertex_descriptor a, vertex_descriptor b) const { return halfedge(a, b, mesh_).second; }
 
   // The triangle (a, b, c), in this order, certifies exactly and faces the
-  // same side as `normal`.
+  // same side as `normal` (a test in double: it guards against folds, the
+  // bound itself is what is exact).
   bool keeps(const Point& a, const Point& b, const Point& c, const Eigen::Vector3d& normal) const
   {
     if(!triangle_verdict(a, b, c, bounds_).within_bounds()) return false;
@@ -442,6 +443,8 @@ private:
       return std::abs(2 * double(x) - double(d)) < std::abs(2 * double(y) - double(d));
     });
     for(std::size_t j : wings) {
+      const vertex_descriptor other_wing = source(ring[j], mesh_);
+      if(!is_border_vertex(other_wing) && valence(other_wing) >= 11) continue;  // would become bad
       Vertex_split_plan<Point, halfedge_descriptor> plan;
       if(plan_vertex_split(mesh_, vpm_, ring[0], ring[j], k_, bounds_, plan)) {
         apply_vertex_split(mesh_, vpm_, plan);

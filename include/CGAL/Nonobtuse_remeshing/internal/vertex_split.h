@@ -11,7 +11,7 @@
 // feasible_region.h with w2 fixed), then w2 with w1 fixed, a few rounds. The
 // linearization is a means only: the split is applied when every new face is
 // certified exactly in the angle bounds and keeps the orientation of the face
-// of w it replaces.
+// of w it replaces (a test in double, against folds).
 
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_VERTEX_SPLIT_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_VERTEX_SPLIT_H
