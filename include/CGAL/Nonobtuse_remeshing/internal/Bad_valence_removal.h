@@ -152,17 +152,9 @@ private:
   Eigen::Vector3d position(vertex_descriptor v) const { return to_eigen(get(vpm_, v)); }
   bool edge_exists(vertex_descriptor a, vertex_descriptor b) const { return halfedge(a, b, mesh_).second; }
 
-  // The triangle (a, b, c), in this order, certifies exactly and faces the
-  // same side as `normal` (a test in double: it guards against folds, the
-  // bound itself is what is exact).
-  bool keeps(const Point& a, const Point& b, const Point& c, const Eigen::Vector3d& normal) const
-  {
-    if(!triangle_verdict(a, b, c, bounds_).within_bounds()) return false;
-    return (to_eigen(b) - to_eigen(a)).cross(to_eigen(c) - to_eigen(a)).dot(normal) > 0.;
-  }
   bool keeps(vertex_descriptor a, vertex_descriptor b, vertex_descriptor c, const Eigen::Vector3d& normal) const
   {
-    return keeps(get(vpm_, a), get(vpm_, b), get(vpm_, c), normal);
+    return keeps_face(get(vpm_, a), get(vpm_, b), get(vpm_, c), normal, bounds_);
   }
   // Normal of the face of h (not normalized).
   Eigen::Vector3d normal(halfedge_descriptor h) const
@@ -394,7 +386,7 @@ private:
         const vertex_descriptor a = source(h, mesh_), b = target(next(h, mesh_), mesh_);
         if(a == v || a == w || b == v || b == w) continue;
         // face (a, end, b) becomes (a, p, b)
-        if(!keeps(get(vpm_, a), p, get(vpm_, b), normal(h))) return refuse();
+        if(!keeps_face(get(vpm_, a), p, get(vpm_, b), normal(h), bounds_)) return refuse();
       }
     const vertex_descriptor kept = Euler::collapse_edge(edge(vw.first, mesh_), mesh_);
     put(gone_, kept == v ? w : v, true);

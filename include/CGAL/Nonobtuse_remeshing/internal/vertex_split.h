@@ -38,6 +38,18 @@ Eigen::Vector3d to_eigen(const Point& p)
   return Eigen::Vector3d(to_double(p.x()), to_double(p.y()), to_double(p.z()));
 }
 
+/// The triangle (a, b, c), in this order, certifies exactly within `bounds`
+/// and faces the side of `normal` (a test in double: it guards against
+/// folds; the bound is what is exact). Every face a valence operation
+/// creates passes it before the operation is applied.
+template <typename Point>
+bool keeps_face(const Point& a, const Point& b, const Point& c, const Eigen::Vector3d& normal,
+                const Angle_bounds& bounds)
+{
+  if(!triangle_verdict(a, b, c, bounds).within_bounds()) return false;
+  return (to_eigen(b) - to_eigen(a)).cross(to_eigen(c) - to_eigen(a)).dot(normal) > 0.;
+}
+
 /// Minimizes |x - target|^2 over the feasible region of a vertex at `from`
 /// whose opposite edges are `edges` (equation 5.17's form, with the target
 /// the caller's); returns `from` when the region is empty or degenerate.
@@ -181,8 +193,7 @@ bool plan_vertex_split(
   // Exact certification of the d + 2 new faces, in face order, each facing
   // the side of the face of w it replaces.
   auto keeps = [&](const Point& a, const Point& b, const Point& c, const Eigen::Vector3d& normal) {
-    if(!triangle_verdict(a, b, c, bounds).within_bounds()) return false;
-    return (to_eigen(b) - to_eigen(a)).cross(to_eigen(c) - to_eigen(a)).dot(normal) > 0.;
+    return keeps_face(a, b, c, normal, bounds);
   };
   auto old_normal = [&](int i) { return Eigen::Vector3d((pw - r(i)).cross(r(i + 1) - r(i))); };
   auto certified = [&](const Point& q1, const Point& q2) {
