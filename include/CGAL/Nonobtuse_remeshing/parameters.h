@@ -14,6 +14,8 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <functional>
+
 namespace CGAL {
 namespace Nonobtuse_remeshing {
 namespace internal_np {
@@ -96,6 +98,16 @@ auto combine(const NP1& np1, const NP2& np2, const NPs&... nps)
 }
 
 } // namespace parameters
+
+namespace internal {
+
+// A visitor given by value is copied, one given with std::ref is used in place.
+template <typename Visitor>
+Visitor& visitor_reference(Visitor& v) { return v; }
+template <typename Visitor>
+Visitor& visitor_reference(std::reference_wrapper<Visitor>& v) { return v.get(); }
+
+} // namespace internal
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
 

@@ -8,6 +8,7 @@
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_BAD_VALENCE_REMOVAL_H
 
 #include <CGAL/Nonobtuse_remeshing/internal/angle_predicates.h>
+#include <CGAL/Nonobtuse_remeshing/internal/certified_faces.h>
 #include <CGAL/Nonobtuse_remeshing/internal/feasible_region.h>
 #include <CGAL/Nonobtuse_remeshing/internal/small_qp.h>
 #include <CGAL/Nonobtuse_remeshing/internal/vertex_split.h>
@@ -362,13 +363,7 @@ private:
   {
     const auto vw = halfedge(v, w, mesh_);
     if(!vw.second || !Euler::does_satisfy_link_condition(edge(vw.first, mesh_), mesh_)) return false;
-    const Eigen::Vector3d mid = 0.5 * (position(v) + position(w));
-    Local_frame frame;
-    frame.origin = mid;
-    frame.scale = 0.;
-    for(vertex_descriptor end : {v, w})
-      for(vertex_descriptor x : vertices_around_target(halfedge(end, mesh_), mesh_))
-        frame.scale = (std::max)(frame.scale, (position(x) - mid).norm());
+    const Local_frame frame = collapse_frame(mesh_, vpm_, vw.first);
     region_.clear();
     if(!(frame.scale > 0.) || !collapse_feasible_region(mesh_, vpm_, vw.first, k_, frame, region_)) return refuse();
     Small_qp qp;
@@ -379,15 +374,7 @@ private:
     if(r.status != Qp_status::optimal) return refuse();
     const Eigen::Vector3d x = frame.to_global(r.x);
     const Point p(x[0], x[1], x[2]);
-    // The surviving faces: around v and w, except the edge's own.
-    for(vertex_descriptor end : {v, w})
-      for(halfedge_descriptor h : halfedges_around_target(end, mesh_)) {
-        if(is_border(h, mesh_)) continue;
-        const vertex_descriptor a = source(h, mesh_), b = target(next(h, mesh_), mesh_);
-        if(a == v || a == w || b == v || b == w) continue;
-        // face (a, end, b) becomes (a, p, b)
-        if(!keeps_face(get(vpm_, a), p, get(vpm_, b), normal(h), bounds_)) return refuse();
-      }
+    if(!collapse_keeps_faces(mesh_, vpm_, vw.first, p, bounds_)) return refuse();
     const vertex_descriptor kept = Euler::collapse_edge(edge(vw.first, mesh_), mesh_);
     put(gone_, kept == v ? w : v, true);
     put(vpm_, kept, p);

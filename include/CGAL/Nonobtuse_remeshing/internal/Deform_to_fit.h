@@ -68,11 +68,6 @@ struct Deform_to_fit_statistics
 
 namespace internal {
 
-template <typename Visitor>
-Visitor& visitor_reference(Visitor& v) { return v; }
-template <typename Visitor>
-Visitor& visitor_reference(std::reference_wrapper<Visitor>& v) { return v.get(); }
-
 struct Deform_to_fit_options
 {
   double alpha = 0.5;

@@ -9,6 +9,8 @@
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_CLOSEST_TRIANGLE_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_CLOSEST_TRIANGLE_H
 
+#include <CGAL/Nonobtuse_remeshing/internal/quadric.h>
+
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -30,25 +32,6 @@
 namespace CGAL {
 namespace Nonobtuse_remeshing {
 namespace internal {
-
-/// Sum of squared distances to planes, Q(x) = sum (n.x + d)^2 (thesis,
-/// equation 5.10), with its number of planes.
-struct Quadric
-{
-  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();  // sum n n^T
-  Eigen::Vector3d b = Eigen::Vector3d::Zero();  // sum d n
-  double c = 0.;                                // sum d^2
-  std::size_t planes = 0;
-
-  void add_plane(const Eigen::Vector3d& n, double d)
-  {
-    A += n * n.transpose();
-    b += d * n;
-    c += d * d;
-    ++planes;
-  }
-  double operator()(const Eigen::Vector3d& x) const { return x.dot(A * x) + 2. * b.dot(x) + c; }
-};
 
 template <typename TriangleMesh>
 class Closest_triangle

@@ -36,6 +36,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -145,6 +146,26 @@ bool vertex_feasible_region(const TriangleMesh& mesh, VertexPointMap vpm,
     if(!edge_feasible_region(a, b, y, k, out)) return false;
   }
   return true;
+}
+
+/// The frame of F(u, v) for the collapse of the edge of `h`: centred on the
+/// edge's midpoint, scaled by the farthest vertex of the two ends' rings
+/// (scale 0 when all coincide).
+template <typename TriangleMesh, typename VertexPointMap>
+Local_frame collapse_frame(const TriangleMesh& mesh, VertexPointMap vpm,
+                           typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h)
+{
+  auto position = [&](auto v) {
+    const auto& p = get(vpm, v);
+    return Eigen::Vector3d(to_double(p.x()), to_double(p.y()), to_double(p.z()));
+  };
+  Local_frame frame;
+  frame.origin = 0.5 * (position(source(h, mesh)) + position(target(h, mesh)));
+  frame.scale = 0.;
+  for(auto end : {source(h, mesh), target(h, mesh)})
+    for(auto x : vertices_around_target(halfedge(end, mesh), mesh))
+      frame.scale = (std::max)(frame.scale, (position(x) - frame.origin).norm());
+  return frame;
 }
 
 /// F(u, v) (thesis, equations 6.1-6.2) for the collapse of the edge of `h`:

@@ -17,6 +17,7 @@
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_VERTEX_SPLIT_H
 
 #include <CGAL/Nonobtuse_remeshing/internal/angle_predicates.h>
+#include <CGAL/Nonobtuse_remeshing/internal/certified_faces.h>
 #include <CGAL/Nonobtuse_remeshing/internal/feasible_region.h>
 #include <CGAL/Nonobtuse_remeshing/internal/small_qp.h>
 
@@ -31,24 +32,6 @@
 namespace CGAL {
 namespace Nonobtuse_remeshing {
 namespace internal {
-
-template <typename Point>
-Eigen::Vector3d to_eigen(const Point& p)
-{
-  return Eigen::Vector3d(to_double(p.x()), to_double(p.y()), to_double(p.z()));
-}
-
-/// The triangle (a, b, c), in this order, certifies exactly within `bounds`
-/// and faces the side of `normal` (a test in double: it guards against
-/// folds; the bound is what is exact). Every face a valence operation
-/// creates passes it before the operation is applied.
-template <typename Point>
-bool keeps_face(const Point& a, const Point& b, const Point& c, const Eigen::Vector3d& normal,
-                const Angle_bounds& bounds)
-{
-  if(!triangle_verdict(a, b, c, bounds).within_bounds()) return false;
-  return (to_eigen(b) - to_eigen(a)).cross(to_eigen(c) - to_eigen(a)).dot(normal) > 0.;
-}
 
 /// Minimizes |x - target|^2 over the feasible region of a vertex at `from`
 /// whose opposite edges are `edges` (equation 5.17's form, with the target
