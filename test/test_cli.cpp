@@ -67,7 +67,8 @@ std::size_t lines(const std::string& text)
 
 TEST(Cli, HelpForTheToolAndEverySubcommand)
 {
-  for(const std::string& args : std::vector<std::string>{"--help", "certify --help", "report --help"}) {
+  for(const std::string& args :
+      std::vector<std::string>{"--help", "certify --help", "report --help", "remesh --help", "decimate --help"}) {
     const Outcome r = run(args);
     EXPECT_EQ(r.code, 0) << args;
     EXPECT_NE(r.out.find("usage: nonobtuse-remesh"), std::string::npos) << args;
@@ -321,4 +322,68 @@ TEST(Cli, RemeshRefusesBadRequestsWithoutWriting)
   EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + folder + "/missing/out.off").code, 3);
   EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + folder + "/out.xyz").code, 3);
   EXPECT_EQ(std::system(("test -z \"$(ls -A '" + folder + "')\"").c_str()), 0) << "nothing written";
+}
+
+// Levels of detail from remesh and decimate on a certified mesh: every file
+// certifies, reaches its target, and the JSON agrees with the files.
+TEST(Cli, DecimateAndLevelsOfDetail)
+{
+  const std::string folder = scratch();
+  const std::string full = folder + "/sphere.off", json = folder + "/sphere.json";
+  const Outcome r = run("remesh " + data("sphere.off") + " -o " + full + " --resolution 30 --lod 0.5,0.1 -q --json " + json);
+  ASSERT_EQ(r.code, 0) << r.err;
+  Mesh mesh;
+  NR::read_triangle_mesh(full, mesh);
+  const auto j = nlohmann::json::parse(slurp(json));
+  ASSERT_EQ(j["levels"].size(), 2u);
+  for(int i = 1; i <= 2; ++i) {
+    const std::string path = folder + "/sphere_lod" + std::to_string(i) + ".off";
+    ASSERT_TRUE(exists(path)) << path;
+    Mesh level;
+    NR::read_triangle_mesh(path, level);
+    EXPECT_TRUE(NR::certify_angle_bounds(level).is_certified()) << path;
+    const auto& l = j["levels"][i - 1];
+    EXPECT_EQ(l["output"], path);
+    EXPECT_EQ(l["reached"], true);
+    EXPECT_EQ(l["decimation"]["vertices_after"], vertices(level).size());
+    EXPECT_EQ(l["report_against_full_resolution"]["certification"]["certified"], true);
+    EXPECT_EQ(l["report_against_full_resolution"]["topology"]["euler_characteristic"], 2);
+  }
+  EXPECT_NE(r.out.find("wrote level 2"), std::string::npos);
+
+  const std::string decimated = folder + "/decimated.ply", djson = folder + "/decimated.json";
+  const Outcome d = run("decimate " + full + " -o " + decimated + " --ratio 0.3 -q --json " + djson);
+  ASSERT_EQ(d.code, 0) << d.err;
+  Mesh out;
+  NR::read_triangle_mesh(decimated, out);
+  EXPECT_TRUE(NR::certify_angle_bounds(out).is_certified());
+  EXPECT_EQ(vertices(out).size(), std::size_t(std::llround(0.3 * double(vertices(mesh).size()))));
+  const auto dj = nlohmann::json::parse(slurp(djson));
+  EXPECT_EQ(dj["decimation"]["target_reached"], true);
+  EXPECT_EQ(dj["decimation"]["vertices_after"], vertices(out).size());
+}
+
+// An uncertified input exits 1 with one line; bad requests exit 2; nothing
+// is written.
+TEST(Cli, DecimateRefusesWithoutWriting)
+{
+  const std::string folder = scratch();
+  const std::string init = folder + "/init.off", out = folder + "/out.off";
+  ASSERT_EQ(run("remesh " + data("sphere.off") + " -o " + init + " --resolution 20 --stop-after init").code, 0);
+  const Outcome raw = run("decimate " + data("pig.off") + " -o " + out + " --ratio 0.5");
+  EXPECT_EQ(raw.code, 1);
+  EXPECT_EQ(lines(raw.err), 1u) << raw.err;
+  EXPECT_NE(raw.err.find("does not certify"), std::string::npos);
+  for(const std::string& args : std::vector<std::string>{
+          "decimate " + init + " -o " + out, "decimate " + init + " -o " + out + " --ratio 0.5 --target-vertices 9",
+          "decimate " + init + " -o " + out + " --ratio 1.5", "decimate " + init + " -o " + out + " --ratio 0.5 --max-error 0",
+          "decimate " + init + " -o " + out + " --ratio 0.5 --min-valence 2",
+          "remesh " + data("sphere.off") + " -o " + out + " --lod 0.1,0.5",
+          "remesh " + data("sphere.off") + " -o " + out + " --lod 0.5,x",
+          "remesh " + data("sphere.off") + " -o " + out + " --lod 0.5 --stop-after init"}) {
+    const Outcome r = run(args);
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+    EXPECT_EQ(lines(r.err), 1u) << args << "\n" << r.err;
+  }
+  EXPECT_FALSE(exists(out));
 }

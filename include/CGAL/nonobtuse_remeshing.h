@@ -20,5 +20,6 @@
 #include <CGAL/Nonobtuse_remeshing/nonobtuse_marching_cubes.h>
 #include <CGAL/Nonobtuse_remeshing/remove_bad_valence_vertices.h>
 #include <CGAL/Nonobtuse_remeshing/deform_to_fit.h>
+#include <CGAL/Nonobtuse_remeshing/angle_bounded_decimation.h>
 
 #endif // CGAL_NONOBTUSE_REMESHING_H

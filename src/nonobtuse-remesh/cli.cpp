@@ -1,5 +1,6 @@
 #include "cli.h"
 
+#include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
 #include <CGAL/Nonobtuse_remeshing/mesh_io.h>
 
 #include <iostream>
@@ -98,6 +99,40 @@ int run_guarded(const std::string& name, const std::function<int()>& body)
     std::cerr << "nonobtuse-remesh " << name << ": internal failure: unknown exception\n";
     return internal_failure;
   }
+}
+
+bool write_certified(const std::string& path, const Mesh& mesh, std::size_t& faces)
+{
+  faces = 0;
+  bool certified = false;
+  try {
+    NR::write_mesh_atomically(path, mesh, [&](const std::string& temporary) {
+      Mesh reread;
+      NR::read_triangle_mesh(temporary, reread);
+      const auto certificate = NR::certify_angle_bounds(reread);
+      faces = certificate.faces;
+      certified = certificate.is_certified() && faces == num_faces(mesh);
+      return certified;
+    });
+  } catch(const NR::Output_error&) {
+    if(faces > 0 && !certified) return false;  // the check refused the file
+    throw;
+  }
+  return true;
+}
+
+void Progress_line::show(const std::string& text)
+{
+  const auto now = std::chrono::steady_clock::now();
+  if(quiet || (shown_ && now - last_ < std::chrono::seconds(1))) return;
+  last_ = now;
+  shown_ = true;
+  std::cerr << (terminal_ ? "\r" : "") << text << (terminal_ ? "   " : "\n") << std::flush;
+}
+
+void Progress_line::done()
+{
+  if(shown_ && terminal_) std::cerr << "\n";
 }
 
 } // namespace nonobtuse_cli

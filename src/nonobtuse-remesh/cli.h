@@ -9,6 +9,9 @@
 
 #include <boost/program_options.hpp>
 
+#include <unistd.h>
+
+#include <chrono>
 #include <functional>
 #include <string>
 #include <vector>
@@ -49,7 +52,29 @@ bool parse_options(const std::string& name, const std::string& synopsis,
 // Runs `body`, mapping exceptions to one-line messages and exit codes.
 int run_guarded(const std::string& name, const std::function<int()>& body);
 
+// Writes `mesh` to `path` atomically; the temporary file is re-read and
+// certified in [30, 90] degrees before it replaces anything. Returns false,
+// writing nothing, if the written file does not certify; `faces` gets the
+// faces of the written file. Throws Output_error when it cannot write.
+bool write_certified(const std::string& path, const Mesh& mesh, std::size_t& faces);
+
+// A progress line on standard error, at the first call and then at most once
+// a second: rewritten in place on a terminal, a new line otherwise; nothing
+// when quiet.
+struct Progress_line
+{
+  bool quiet = false;
+  void show(const std::string& text);
+  void done();
+
+private:
+  bool terminal_ = isatty(2) != 0;
+  bool shown_ = false;
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
 int certify_command(int argc, char** argv);
+int decimate_command(int argc, char** argv);
 int report_command(int argc, char** argv);
 int remesh_command(int argc, char** argv);
 

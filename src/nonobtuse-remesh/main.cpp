@@ -19,6 +19,8 @@ struct Command
 const Command commands[] = {
   {"certify", &nonobtuse_cli::certify_command,
    "decide exactly whether every angle of a mesh lies within the bounds"},
+  {"decimate", &nonobtuse_cli::decimate_command,
+   "decimate a certified mesh by angle-bounded edge collapses"},
   {"remesh", &nonobtuse_cli::remesh_command,
    "remesh a surface into a certified well-shaped nonobtuse mesh"},
   {"report", &nonobtuse_cli::report_command,

@@ -1,7 +1,8 @@
 // nonobtuse-remesh remesh INPUT -o OUTPUT [--resolution N] [--stop-after init|valence|fit]
-//                  [--signs patches|inside-test] [fit options] [--json FILE]
+//                  [--signs patches|inside-test] [fit options] [--lod R,R...] [--json FILE]
 
 #include "cli.h"
+#include "decimation_cli.h"
 #include "json_output.h"
 
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
@@ -16,6 +17,7 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 
 #include <unistd.h>
 
@@ -159,30 +161,18 @@ void print_fit(std::ostream& out, const NR::Deform_to_fit_statistics& s)
   if(s.budget_exhausted) out << "  note: the budget ran out before the fit converged\n";
 }
 
-// The fit's progress line on standard error, at the start and then every
-// second: rewritten in place on a terminal, a new line otherwise.
+// The fit's progress line.
 struct Fit_progress
 {
-  bool quiet = false;
-  bool terminal = isatty(2) != 0;
-  std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
-  bool shown = false;
+  Progress_line line;
 
   bool keep_going(const NR::Deform_to_fit_statistics& s)
   {
-    const auto now = std::chrono::steady_clock::now();
-    if(quiet || (shown && now - last < std::chrono::seconds(1))) return true;
-    last = now;
-    shown = true;
-    std::cerr << (terminal ? "\r" : "") << "fit: "
-              << (s.stage == NR::Deform_to_fit_stage::smoothing ? "smoothing" : "optimization") << ", "
-              << s.moves << " moves, rms vertex distance " << std::setprecision(3) << s.rms_distance << "%"
-              << (terminal ? "   " : "\n") << std::flush;
+    std::ostringstream text;
+    text << "fit: " << (s.stage == NR::Deform_to_fit_stage::smoothing ? "smoothing" : "optimization") << ", "
+         << s.moves << " moves, rms vertex distance " << std::setprecision(3) << s.rms_distance << "%";
+    line.show(text.str());
     return true;
-  }
-  void done()
-  {
-    if(shown && terminal) std::cerr << "\n";
   }
 };
 
@@ -190,7 +180,8 @@ struct Fit_progress
 
 int remesh_command(int argc, char** argv)
 {
-  std::string input_path, output_path, json_path, stop_after = "fit", signs = "patches";
+  std::string input_path, output_path, json_path, stop_after = "fit", signs = "patches", lod;
+  Decimation_settings decimation;
   int resolution = 100, drum_subdivisions = 2, quadric_rings = 0, smoothing_steps = 2;
   double alpha = 0.5, fit_tolerance = 1e-4, max_seconds = 0.;
   long long max_moves = 0;
@@ -225,7 +216,11 @@ int remesh_command(int argc, char** argv)
     ("no-tangential-smoothing", "fit: smoothing term in every direction, as in the thesis")
     ("no-feature-attraction", "fit: no attraction of the input's vertices and sharp edges")
     ("quiet,q", po::bool_switch(&quiet), "no progress line")
+    ("lod", po::value<std::string>(&lod),
+     "levels of detail: decreasing fractions of the vertices to keep, like 0.5,0.1; level i is written "
+     "next to OUTPUT as NAME_lodi.EXT")
     ("json", po::value<std::string>(&json_path), "also write statistics and the quality report as JSON");
+  decimation.add_options(options);
   po::positional_options_description positional;
   positional.add("input", 1);
   po::variables_map vm;
@@ -234,7 +229,8 @@ int remesh_command(int argc, char** argv)
                     "Remeshes INPUT into a mesh whose angles all lie in [30, 90] degrees, certified\n"
                     "exactly on the written file. Stages: init (nonobtuse Marching Cubes), valence\n"
                     "(removal of bad-valence vertices, vertex splits), fit (deform-to-fit with\n"
-                    "constrained Laplacian smoothing).",
+                    "constrained Laplacian smoothing); then, with --lod, levels of detail by\n"
+                    "angle-bounded decimation, each certified on its written file.",
                     options, positional, argc, argv, vm, exit_code))
     return exit_code;
 
@@ -261,6 +257,13 @@ int remesh_command(int argc, char** argv)
     if(!NR::internal::is_mesh_extension(NR::internal::file_extension(output_path)))
       throw NR::Output_error("cannot write '" + output_path + "': unsupported extension (expected .off, .obj, .ply or .stl)");
     if(!json_path.empty()) check_output_path(json_path, {input_path, output_path});
+    decimation.check(vm);
+    decimation.quiet = quiet;
+    decimation.drum_subdivisions = drum_subdivisions;
+    const std::vector<double> ratios = lod.empty() ? std::vector<double>() : parse_ratios(lod);
+    if(!ratios.empty() && stop_after != "fit") throw std::invalid_argument("--lod needs the whole pipeline (no --stop-after)");
+    for(std::size_t i = 1; i <= ratios.size(); ++i)
+      check_output_path(level_path(output_path, i), {input_path, output_path, json_path});
 
     const Mesh input = load_mesh(input_path);
     const NR::Sign_source source = signs == "patches" ? NR::Sign_source::patches : NR::Sign_source::inside_test;
@@ -296,7 +299,7 @@ int remesh_command(int argc, char** argv)
     NR::Deform_to_fit_statistics fit;
     if(stop_after == "fit") {
       Fit_progress progress;
-      progress.quiet = quiet;
+      progress.line.quiet = quiet;
       fit = NR::deform_to_fit(
           output, input,
           NR::parameters::combine(
@@ -310,32 +313,53 @@ int remesh_command(int argc, char** argv)
               NR::parameters::tangential_smoothing(vm.count("no-tangential-smoothing") == 0),
               NR::parameters::attract_features(vm.count("no-feature-attraction") == 0),
               NR::parameters::fit_visitor(std::ref(progress))));
-      progress.done();
+      progress.line.done();
       print_fit(std::cout, fit);
     }
 
     // The file itself must certify: it is re-read and certified before it
     // replaces anything.
     std::size_t written_faces = 0;
-    bool written_certified = false;
-    try {
-      NR::write_mesh_atomically(output_path, output, [&](const std::string& temporary) {
-        Mesh reread;
-        NR::read_triangle_mesh(temporary, reread);
-        const auto certificate = NR::certify_angle_bounds(reread);
-        written_faces = certificate.faces;
-        written_certified = certificate.is_certified() && written_faces == num_faces(output);
-        return written_certified;
-      });
-    } catch(const NR::Output_error& e) {
-      if(written_faces > 0 && !written_certified) {
-        std::cerr << "nonobtuse-remesh remesh: certification of the written file failed; nothing written\n";
-        return int(certification_failed);
-      }
-      throw;
+    if(!write_certified(output_path, output, written_faces)) {
+      std::cerr << "nonobtuse-remesh remesh: certification of the written file failed; nothing written\n";
+      return int(certification_failed);
     }
     std::cout << "wrote " << output_path << ": " << written_faces
               << " faces, certified in [30, 90] degrees on the written file\n";
+
+    // Levels of detail: one decimation of the output, each level certified
+    // on its written file and measured against the full-resolution mesh.
+    json levels_json = json::array();
+    if(!ratios.empty()) {
+      const auto levels = decimation_levels(output, ratios, decimation);
+      for(std::size_t i = 0; i < levels.size(); ++i) {
+        const auto& level = levels[i];
+        const std::string path = level_path(output_path, i + 1);
+        print_decimation(std::cout, level.statistics);
+        std::size_t faces = 0;
+        if(!write_certified(path, level.mesh, faces)) {
+          std::cerr << "nonobtuse-remesh remesh: certification of the written level " << path
+                    << " failed; it is not written\n";
+          return int(certification_failed);
+        }
+        const NR::Quality_report report = NR::quality_report(level.mesh, &output);
+        std::cout << "wrote level " << i + 1 << " " << path << ": " << vertices(level.mesh).size() << " vertices ("
+                  << "target " << level.target_vertices << "), " << faces
+                  << " faces, certified in [30, 90] degrees on the written file; Hausdorff distance to the "
+                     "full-resolution mesh "
+                  << std::setprecision(4) << report.distance->hausdorff_symmetric << "% of its diagonal\n";
+        if(!level.reached)
+          std::cout << "note: level " << i + 1 << " did not reach its target: "
+                    << stop_reason_name(level.statistics.stop_reason) << "; the levels after it are not written\n";
+        json l;
+        l["ratio"] = ratios[i];
+        l["output"] = path;
+        l["reached"] = level.reached;
+        l["decimation"] = decimation_json(level.statistics);
+        l["report_against_full_resolution"] = report_to_json(path, report, {});
+        levels_json.push_back(l);
+      }
+    }
 
     if(!json_path.empty()) {
       const NR::Quality_report report = NR::quality_report(output, &input);
@@ -346,6 +370,7 @@ int remesh_command(int argc, char** argv)
       if(stop_after != "init" && valence_cleanup) j["valence"] = valence_json(valence);
       if(stop_after == "fit") j["fit"] = fit_json(fit);
       j["output_report"] = report_to_json(output_path, report, {});
+      if(!ratios.empty()) j["levels"] = levels_json;
       write_json_atomically(json_path, j);
     }
     return int(success);

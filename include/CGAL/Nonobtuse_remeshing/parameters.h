@@ -41,7 +41,16 @@ namespace internal_np {
   X(tangential_smoothing_t, tangential_smoothing) /* S along the input only */  \
   X(attract_features_t, attract_features) /* input tips and creases hold */     \
   X(fit_visitor_t, fit_visitor)           /* progress and cancellation */      \
-  X(vertex_split_t, vertex_split)         /* splits after removal */
+  X(vertex_split_t, vertex_split)         /* splits after removal */        \
+  X(target_vertices_t, target_vertices)   /* decimation: vertices to keep */ \
+  X(vertex_ratio_t, vertex_ratio)         /* decimation: fraction to keep */ \
+  X(max_error_t, max_error)               /* decimation: fraction of diag */ \
+  X(min_interior_valence_t,                                                     \
+    min_interior_valence)                 /* decimation: valence floor */    \
+  X(min_border_valence_t,                                                       \
+    min_border_valence)                   /* decimation: valence floor */    \
+  X(decimation_visitor_t, decimation_visitor) /* progress, cancellation */ \
+  X(relaxation_t, relaxation)             /* decimation: fit between rounds */
 
 #define CGAL_NONOBTUSE_DECLARE_TAG(TAG, NAME) enum TAG { NAME };
 CGAL_NONOBTUSE_TAGS(CGAL_NONOBTUSE_DECLARE_TAG)

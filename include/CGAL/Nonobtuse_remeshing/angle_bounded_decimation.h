@@ -1,0 +1,196 @@
+// Angle-bounded decimation (thesis, chapter 6): quadric-error edge collapses
+// that keep every angle in [30, 90] degrees, and the hierarchy of coarser
+// meshes they make.
+
+#ifndef CGAL_NONOBTUSE_REMESHING_ANGLE_BOUNDED_DECIMATION_H
+#define CGAL_NONOBTUSE_REMESHING_ANGLE_BOUNDED_DECIMATION_H
+
+#include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
+#include <CGAL/Nonobtuse_remeshing/internal/Angle_bounded_decimation.h>
+#include <CGAL/Nonobtuse_remeshing/parameters.h>
+
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Nonobtuse_remeshing {
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Default visitor of `angle_bounded_decimation()`: never cancels. A
+/// visitor has `bool keep_going(const Angle_bounded_decimation_statistics&)`,
+/// called before every collapse; returning false stops the decimation, and
+/// the mesh stays certified.
+struct Default_decimation_visitor
+{
+  bool keep_going(const Angle_bounded_decimation_statistics&) { return true; }
+};
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// One level of `angle_bounded_decimation_hierarchy()`.
+template <typename TriangleMesh>
+struct Decimation_level
+{
+  TriangleMesh mesh;
+  std::size_t target_vertices = 0;
+  bool reached = false;  ///< false: the decimation stopped before the target (see `statistics.stop_reason`)
+  Angle_bounded_decimation_statistics statistics;  ///< from the full mesh to this level
+};
+
+namespace internal {
+
+// Reads and checks the options shared by both entry points; throws
+// std::invalid_argument before anything changes.
+template <typename TriangleMesh, typename NamedParameters>
+Angle_bounded_decimation_options decimation_options(const TriangleMesh& mesh, const NamedParameters& np,
+                                                    double& diagonal)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Angle_bounded_decimation_options o;  // its members hold the defaults
+  o.drum_subdivisions = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), o.drum_subdivisions);
+  o.min_interior_valence = choose_parameter(get_parameter(np, internal_np::min_interior_valence), o.min_interior_valence);
+  o.min_border_valence = choose_parameter(get_parameter(np, internal_np::min_border_valence), o.min_border_valence);
+  o.max_error = choose_parameter(get_parameter(np, internal_np::max_error), o.max_error);
+  o.relaxation = choose_parameter(get_parameter(np, internal_np::relaxation), o.relaxation);
+  if(o.drum_subdivisions < 1 || o.drum_subdivisions > 16)
+    throw std::invalid_argument("the drum subdivisions k must lie in [1, 16]");
+  if(o.min_interior_valence > 12 || o.min_border_valence > 12)
+    throw std::invalid_argument("the valence floors must be at most 12");
+  if(!(o.max_error > 0.)) throw std::invalid_argument("the maximum error must be positive");
+  if(!is_triangle_mesh(mesh)) throw std::invalid_argument("angle_bounded_decimation: not a triangle mesh");
+  if(!certify_angle_bounds(mesh).is_certified())
+    throw std::invalid_argument("angle_bounded_decimation needs a mesh certified in [30, 90] degrees");
+  const Bbox_3 box = Polygon_mesh_processing::bbox(mesh);
+  diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                       CGAL::square(box.zmax() - box.zmin()));
+  return o;
+}
+
+} // namespace internal
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Angle-bounded decimation (thesis, chapter 6) of `mesh`, whose angles
+/// must lie in [30, 90] degrees: CGAL's `Surface_mesh_simplification::
+/// edge_collapse` with the thesis's policies. Each edge (u, v) is placed at
+/// w* = argmin Q_u + Q_v over its linearized feasible region F(u, v)
+/// (equations 6.1-6.4; Q is the sum of the squared distances to the planes
+/// of the faces around an interior vertex, equation 5.10, and the squared
+/// distance to a border vertex itself, equation 6.3), costs Q_u(w*) + Q_v(w*)
+/// (6.5, with a tie break by edge length, see the manual), and collapses
+/// cheapest first, every cost kept current (no lazy evaluation, 6.4). A
+/// collapse goes ahead only if every face around w* certifies exactly in
+/// [30, 90] degrees, no vertex falls below the valence floor, and the link
+/// condition holds: the mesh is certified after every collapse, and stays
+/// manifold with its Euler characteristic, borders and components.
+///
+/// Beyond the thesis, with `relaxation` (the default), the collapses run in
+/// rounds under a rising cost ceiling and deform-to-fit (chapter 5) fits the
+/// decimated mesh to the full one between rounds: on a fitted nonobtuse mesh
+/// most edges soon have an empty F(u, v), and the thesis's single greedy run
+/// stalls near 40% of the vertices removed (see the manual). Every fitting
+/// move is certified too.
+///
+/// The decimation stops at the target vertex count, when the cheapest
+/// collapse left would place w* farther than `max_error` from the planes and
+/// points its quadric sums (sqrt of the cost, early termination of 6.5), when
+/// no collapse is left (after a relaxation, if on), or when the visitor
+/// cancels; `stop_reason` says which. Removed elements may leave garbage in a
+/// `Surface_mesh` (call `collect_garbage()`). The mesh's internal point map
+/// is used, as in `deform_to_fit()`.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{target_vertices} vertices to keep; default from `vertex_ratio` \cgalParamNEnd
+///   \cgalParamNBegin{vertex_ratio} fraction of the vertices to keep, in (0, 1]; default 0.5 \cgalParamNEnd
+///   \cgalParamNBegin{max_error} early termination, a fraction of the mesh's bounding-box diagonal;
+///     default none \cgalParamNEnd
+///   \cgalParamNBegin{min_interior_valence} no collapse makes an interior vertex of lower valence;
+///     default 4 \cgalParamNEnd
+///   \cgalParamNBegin{min_border_valence} the same for border vertices; default 3 \cgalParamNEnd
+///   \cgalParamNBegin{drum_subdivisions} k of F(u, v), in [1, 16]; default 2 \cgalParamNEnd
+///   \cgalParamNBegin{relaxation} rounds with deform-to-fit between them; false: the thesis's
+///     single greedy run; default true \cgalParamNEnd
+///   \cgalParamNBegin{decimation_visitor} progress and cancellation, see `Default_decimation_visitor`
+///     (pass `std::ref(visitor)` to keep its state) \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// Throws std::invalid_argument, leaving `mesh` unchanged, if `mesh` is not a
+/// triangle mesh certified in [30, 90] degrees or a parameter is out of range.
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Angle_bounded_decimation_statistics angle_bounded_decimation(
+    TriangleMesh& mesh, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  double diagonal = 0.;
+  const internal::Angle_bounded_decimation_options o = internal::decimation_options(mesh, np, diagonal);
+  const double ratio = choose_parameter(get_parameter(np, internal_np::vertex_ratio), 0.5);
+  if(!(ratio > 0. && ratio <= 1.)) throw std::invalid_argument("the vertex ratio must lie in (0, 1]");
+  const std::size_t n = vertices(mesh).size();
+  const std::size_t target =
+      choose_parameter(get_parameter(np, internal_np::target_vertices), std::size_t(std::llround(ratio * double(n))));
+  auto given = choose_parameter(get_parameter(np, internal_np::decimation_visitor), Default_decimation_visitor());
+  auto& visitor = internal::visitor_reference(given);
+  TriangleMesh reference;  // the full mesh, which the relaxation fits to
+  if(o.relaxation) copy_face_graph(mesh, reference);
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  internal::Angle_bounded_decimation<TriangleMesh, std::remove_const_t<decltype(vpm)>,
+                                     std::remove_reference_t<decltype(visitor)> >
+      decimation(mesh, vpm, o, diagonal, visitor);
+  return decimation.run({target}, reference, [](std::size_t, bool, const Angle_bounded_decimation_statistics&) {});
+}
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// A hierarchy of certified meshes (thesis, chapter 6 and Figures 7.1-7.6):
+/// one decimation of a copy of `mesh` that hands out a copy each time the
+/// vertex count reaches `ratios[i]` times the vertices of `mesh`. The
+/// ratios must decrease strictly within (0, 1). If the decimation stops
+/// before a target (see `angle_bounded_decimation()`), that level holds the
+/// mesh where it stopped, with `reached` false, and the levels after it are
+/// left out. Takes the named parameters of `angle_bounded_decimation()`
+/// except the targets; `mesh` is not changed.
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+std::vector<Decimation_level<TriangleMesh> > angle_bounded_decimation_hierarchy(
+    const TriangleMesh& mesh, const std::vector<double>& ratios,
+    const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  if(ratios.empty()) throw std::invalid_argument("the hierarchy needs at least one ratio");
+  for(std::size_t i = 0; i < ratios.size(); ++i)
+    if(!(ratios[i] > 0. && ratios[i] < 1.) || (i > 0 && !(ratios[i] < ratios[i - 1])))
+      throw std::invalid_argument("the ratios of the levels must decrease strictly within (0, 1)");
+  double diagonal = 0.;
+  const internal::Angle_bounded_decimation_options o = internal::decimation_options(mesh, np, diagonal);
+
+  TriangleMesh work;
+  copy_face_graph(mesh, work);
+  std::vector<std::size_t> targets;
+  for(double r : ratios) targets.push_back(std::size_t(std::llround(r * double(vertices(mesh).size()))));
+  auto given = choose_parameter(get_parameter(np, internal_np::decimation_visitor), Default_decimation_visitor());
+  auto& visitor = internal::visitor_reference(given);
+  const auto vpm = get(CGAL::vertex_point, work);
+  internal::Angle_bounded_decimation<TriangleMesh, std::remove_const_t<decltype(vpm)>,
+                                     std::remove_reference_t<decltype(visitor)> >
+      decimation(work, vpm, o, diagonal, visitor);
+  std::vector<Decimation_level<TriangleMesh> > levels;
+  decimation.run(targets, mesh, [&](std::size_t i, bool reached, const Angle_bounded_decimation_statistics& s) {
+    levels.emplace_back();
+    copy_face_graph(work, levels.back().mesh);
+    levels.back().target_vertices = targets[i];
+    levels.back().reached = reached;
+    levels.back().statistics = s;
+  });
+  return levels;
+}
+
+} // namespace Nonobtuse_remeshing
+} // namespace CGAL
+
+#endif // CGAL_NONOBTUSE_REMESHING_ANGLE_BOUNDED_DECIMATION_H

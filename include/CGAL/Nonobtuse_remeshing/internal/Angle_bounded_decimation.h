@@ -1,0 +1,237 @@
+// Angle-bounded decimation (thesis, chapter 6): the initial quadrics
+// (equations 5.10 and 6.3), the stop predicate (the targets, early
+// termination of 6.5, cancellation) and the runs of CGAL's edge_collapse with
+// the policies of decimation_policies.h. A hierarchy is one decimation with
+// several targets: the mesh is handed to a sink each time the vertex count
+// reaches the next target.
+//
+// Beyond the thesis, relaxation: on a fitted nonobtuse mesh most angles sit
+// at their bounds, and after a few collapses four edges in five have an empty
+// F(u, v) (exact probes confirm: the regions are empty, not just their
+// linearization), so a single greedy run stalls near 40% of the vertices
+// removed, its last collapses costing tens of % of the diagonal. So the
+// decimation runs in rounds: each collapses while the cheapest cost stays
+// below a ceiling (sqrt of the cost, from 2.5e-4 of the diagonal, doubling
+// each round, capped by max_error), then deform-to-fit (chapter 5, certified
+// after every move) fits the decimated mesh to the full one, which gives the
+// angles room again. The quadrics carry over from round to round.
+
+#ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_ANGLE_BOUNDED_DECIMATION_H
+#define CGAL_NONOBTUSE_REMESHING_INTERNAL_ANGLE_BOUNDED_DECIMATION_H
+
+#include <CGAL/Nonobtuse_remeshing/internal/Deform_to_fit.h>
+#include <CGAL/Nonobtuse_remeshing/internal/closest_triangle.h>
+#include <CGAL/Nonobtuse_remeshing/internal/decimation_policies.h>
+
+#include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <vector>
+
+namespace CGAL {
+namespace Nonobtuse_remeshing {
+namespace internal {
+
+struct Angle_bounded_decimation_options
+{
+  int drum_subdivisions = 2;
+  std::size_t min_interior_valence = 4;  // the thesis's results: no interior v3,
+  std::size_t min_border_valence = 3;    // no v2
+  double max_error = std::numeric_limits<double>::infinity();  // fraction of the diagonal
+  bool relaxation = true;
+  double first_ceiling = 2.5e-4;       // fraction of the diagonal
+  double relaxation_tolerance = 1e-3;  // the fit's tolerance
+  int max_rounds = 64;
+};
+
+template <typename TriangleMesh, typename VertexPointMap, typename Visitor>
+class Angle_bounded_decimation
+{
+  using GT = boost::graph_traits<TriangleMesh>;
+  using vertex_descriptor = typename GT::vertex_descriptor;
+  using Quadric_map = typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<Quadric> >::type;
+  using Context = Decimation_context<TriangleMesh, Quadric_map>;
+  using Self = Angle_bounded_decimation;
+
+public:
+  Angle_bounded_decimation(TriangleMesh& mesh, VertexPointMap vpm, const Angle_bounded_decimation_options& options,
+                           double diagonal, Visitor& visitor)
+    : mesh_(mesh), vpm_(vpm), options_(options), visitor_(visitor)
+  {
+    context_.quadrics = get(CGAL::dynamic_vertex_property_t<Quadric>(), mesh_);
+    context_.drum_subdivisions = options.drum_subdivisions;
+    context_.min_interior_valence = options.min_interior_valence;
+    context_.min_border_valence = options.min_border_valence;
+    context_.diagonal = diagonal;
+    context_.statistics = &stats_;
+  }
+
+  // Decimates towards the decreasing `targets` (vertex counts), calling
+  // `sink(i, true, stats)` when the count reaches targets[i], and
+  // `sink(i, false, stats)` for the first target not reached, if the
+  // decimation stops before it. `reference` is the full mesh, the target of
+  // the relaxation.
+  template <typename Sink>
+  Angle_bounded_decimation_statistics run(const std::vector<std::size_t>& targets, const TriangleMesh& reference,
+                                          Sink sink)
+  {
+    start_ = std::chrono::steady_clock::now();
+    targets_ = targets;
+    stats_.vertices_before = vertices_ = vertices(mesh_).size();
+    stats_.target_vertices = targets_.empty() ? vertices_ : targets_.back();
+    initialize_quadrics();
+    emit_ = [&](bool reached) {
+      update_statistics();
+      Angle_bounded_decimation_statistics level = stats_;
+      if(reached) level.stop_reason = Decimation_stop_reason::target_reached;
+      sink(next_, reached, level);
+      ++next_;
+    };
+
+    Angle_bounded_placement<Context> placement(&context_);
+    Angle_bounded_cost<Context> cost(&context_);
+    Angle_bounded_filter<Context> filter(&context_);
+    Quadric_visitor<TriangleMesh, Context, Self> visitor(&context_, this);
+    const Stop stop{this};
+    ceiling_ = options_.relaxation ? (std::min)(options_.first_ceiling, options_.max_error) : options_.max_error;
+    std::unique_ptr<Closest_triangle<TriangleMesh> > closest;
+    for(int round = 0; reach_levels() && round < options_.max_rounds; ++round) {
+      ++stats_.rounds;
+      const std::size_t before = stats_.collapses;
+      stopped_by_ceiling_ = false;
+      Surface_mesh_simplification::edge_collapse(
+          mesh_, stop,
+          CGAL::parameters::vertex_point_map(vpm_).get_cost(cost).get_placement(placement).filter(filter).visitor(
+              visitor));
+      if(!reach_levels() || stats_.stop_reason == Decimation_stop_reason::cancelled) break;
+      // Below max_error the ceiling rises; at it (or with no collapse left
+      // under it) a round must remove 0.5% of the vertices to go on.
+      const bool below_max_error = stopped_by_ceiling_ && ceiling_ < options_.max_error;
+      const std::size_t removed = stats_.collapses - before;
+      if(!below_max_error && (removed == 0 || removed < vertices_ / 200)) break;
+      if(below_max_error) ceiling_ = (std::min)(2. * ceiling_, options_.max_error);
+      if(!options_.relaxation) break;
+      if(removed > 0) relax(reference, closest);
+    }
+    if(!reach_levels()) stats_.stop_reason = Decimation_stop_reason::target_reached;
+    else if(stats_.stop_reason != Decimation_stop_reason::cancelled)
+      stats_.stop_reason = stopped_by_ceiling_ && !(ceiling_ < options_.max_error)
+                               ? Decimation_stop_reason::max_error
+                               : Decimation_stop_reason::no_collapse_left;
+    if(next_ < targets_.size()) emit_(false);
+    emit_ = nullptr;
+    update_statistics();
+    return stats_;
+  }
+
+  void collapsed() { --vertices_; }
+
+private:
+  // Deform-to-fit of the decimated mesh to the full one (certified after
+  // every move, connectivity unchanged); the quadrics stay.
+  void relax(const TriangleMesh& reference, std::unique_ptr<Closest_triangle<TriangleMesh> >& closest)
+  {
+    if(!closest) closest.reset(new Closest_triangle<TriangleMesh>(reference, 0));
+    Deform_to_fit_options o;
+    o.tolerance = options_.relaxation_tolerance;
+    Relaxation_visitor fit_visitor{this};
+    Deform_to_fit<TriangleMesh, Relaxation_visitor> fit(mesh_, *closest, context_.diagonal, o, fit_visitor);
+    const Deform_to_fit_statistics f = fit.run();
+    ++stats_.relaxations;
+    stats_.relaxation_moves += f.moves;
+    stats_.relaxation_seconds += f.seconds;
+    if(f.cancelled) stats_.stop_reason = Decimation_stop_reason::cancelled;
+  }
+
+  void update_statistics()
+  {
+    stats_.vertices_after = vertices_;
+    stats_.topology_refusals = context_.non_collapsable - context_.filter_refusals;
+    stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+  // Equation 5.10 for interior vertices (the planes of the incident faces),
+  // equation 6.3 for border vertices (the squared distance to themselves).
+  void initialize_quadrics()
+  {
+    for(vertex_descriptor v : vertices(mesh_)) {
+      Quadric q;
+      const Eigen::Vector3d p = to_eigen(get(vpm_, v));
+      if(is_border(v, mesh_)) {
+        q.add_point(p);
+      } else {
+        for(auto h : halfedges_around_target(v, mesh_)) {
+          const Eigen::Vector3d a = to_eigen(get(vpm_, source(h, mesh_))),
+                                c = to_eigen(get(vpm_, target(next(h, mesh_), mesh_)));
+          const Eigen::Vector3d n = (p - a).cross(c - a);
+          if(n.norm() > 0.) q.add_plane(n.normalized(), -n.normalized().dot(p));
+        }
+      }
+      put(context_.quadrics, v, q);
+    }
+  }
+
+  // Hands every target reached to the sink; true while a target is left.
+  bool reach_levels()
+  {
+    while(next_ < targets_.size() && vertices_ <= targets_[next_]) emit_(true);
+    return next_ < targets_.size();
+  }
+
+  // The fit's visitor: the decimation's visitor decides.
+  struct Relaxation_visitor
+  {
+    Self* self;
+    bool keep_going(const Deform_to_fit_statistics&) { return self->visitor_.keep_going(self->stats_); }
+  };
+
+  // The stop predicate, called before each collapse with the cheapest cost.
+  struct Stop
+  {
+    Self* self;
+    template <typename FT, typename Profile>
+    bool operator()(const FT& cost, const Profile&, std::size_t, std::size_t) const
+    {
+      Angle_bounded_decimation_statistics& s = self->stats_;
+      if(!self->reach_levels()) return true;
+      const double error = std::sqrt(double(cost)) / self->context_.diagonal;
+      if(error > self->ceiling_) {
+        self->stopped_by_ceiling_ = true;
+        s.stopping_error = error;
+        return true;
+      }
+      if(!self->visitor_.keep_going(s)) {
+        s.stop_reason = Decimation_stop_reason::cancelled;
+        return true;
+      }
+      return false;
+    }
+  };
+
+  TriangleMesh& mesh_;
+  VertexPointMap vpm_;
+  const Angle_bounded_decimation_options options_;
+  Visitor& visitor_;
+  Context context_;
+  Angle_bounded_decimation_statistics stats_;
+  std::vector<std::size_t> targets_;
+  std::size_t next_ = 0, vertices_ = 0;
+  std::function<void(bool)> emit_;
+  double ceiling_ = 0.;
+  bool stopped_by_ceiling_ = false;
+  std::chrono::steady_clock::time_point start_;
+};
+
+} // namespace internal
+} // namespace Nonobtuse_remeshing
+} // namespace CGAL
+
+#endif // CGAL_NONOBTUSE_REMESHING_INTERNAL_ANGLE_BOUNDED_DECIMATION_H

@@ -1,0 +1,55 @@
+// Angle-bounded decimation in the tool: the options `decimate` and
+// `remesh --lod` share, the statistics as text and JSON, and the levels of
+// detail of `remesh`.
+
+#ifndef NONOBTUSE_REMESH_DECIMATION_CLI_H
+#define NONOBTUSE_REMESH_DECIMATION_CLI_H
+
+#include "cli.h"
+#include "json_output.h"
+
+#include <CGAL/Nonobtuse_remeshing/angle_bounded_decimation.h>
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace nonobtuse_cli {
+
+struct Decimation_settings
+{
+  double max_error_percent = 0.;  // 0: none
+  int min_valence = 4;
+  int min_border_valence = -1;    // -1: min_valence - 1
+  bool relaxation = true;
+  int drum_subdivisions = 2;
+  bool quiet = false;
+
+  // --max-error, --min-valence, --min-border-valence, --no-relaxation
+  void add_options(po::options_description& options);
+  // Reads the switches and checks the values; throws std::invalid_argument.
+  void check(const po::variables_map& vm);
+};
+
+// Decimates `mesh` in place to `target` vertices.
+CGAL::Nonobtuse_remeshing::Angle_bounded_decimation_statistics decimate(Mesh& mesh, std::size_t target,
+                                                                        const Decimation_settings& settings);
+
+// The hierarchy of `full` at `ratios`, one decimation.
+std::vector<CGAL::Nonobtuse_remeshing::Decimation_level<Mesh> > decimation_levels(
+    const Mesh& full, const std::vector<double>& ratios, const Decimation_settings& settings);
+
+// "0.5,0.1" -> {0.5, 0.1}; throws std::invalid_argument unless the ratios
+// decrease strictly within (0, 1).
+std::vector<double> parse_ratios(const std::string& text);
+
+// The file of level i (from 1) of `output`: "dir/name.off" -> "dir/name_lod1.off".
+std::string level_path(const std::string& output, std::size_t i);
+
+const char* stop_reason_name(CGAL::Nonobtuse_remeshing::Decimation_stop_reason reason);
+void print_decimation(std::ostream& out, const CGAL::Nonobtuse_remeshing::Angle_bounded_decimation_statistics& s);
+json decimation_json(const CGAL::Nonobtuse_remeshing::Angle_bounded_decimation_statistics& s);
+
+} // namespace nonobtuse_cli
+
+#endif // NONOBTUSE_REMESH_DECIMATION_CLI_H

@@ -1,0 +1,271 @@
+// Angle-bounded decimation (thesis, chapter 6): the quadrics, the placement
+// QP against CGAL's solver, a flat hand-built patch, and the fitted meshes of
+// shipped samples decimated into a hierarchy whose every level, re-read from
+// its written file, certifies, keeps the topology and the valence floor;
+// early termination, cancellation (certified at every moment) and refusals.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/nonobtuse_remeshing.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+
+#include <gtest/gtest.h>
+
+#include "test_support.h"
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace NR = CGAL::Nonobtuse_remeshing;
+using nonobtuse_test::Mesh;
+using nonobtuse_test::Point;
+
+namespace {
+
+// The pipeline before decimation: init, valence, fit.
+Mesh fitted(const std::string& name, int resolution)
+{
+  const Mesh input = nonobtuse_test::load(name);
+  Mesh mesh;
+  NR::nonobtuse_marching_cubes(input, mesh, NR::parameters::resolution(resolution));
+  NR::remove_bad_valence_vertices(mesh);
+  mesh.collect_garbage();
+  NR::deform_to_fit(mesh, input);
+  return mesh;
+}
+
+struct Topology
+{
+  long long euler = 0;
+  std::size_t borders = 0, components = 0, non_manifold = 0;
+  explicit Topology(const Mesh& mesh)
+  {
+    const NR::Quality_report r = NR::quality_report(mesh);
+    euler = r.euler_characteristic;
+    borders = r.border_cycles;
+    components = r.connected_components;
+    non_manifold = r.non_manifold_vertices;
+  }
+};
+
+// Vertices below the default valence floor: interior valence 3 or less,
+// border valence 2 or less.
+std::size_t below_floor(const Mesh& mesh)
+{
+  std::size_t n = 0;
+  for(auto v : vertices(mesh)) n += degree(v, mesh) < (CGAL::is_border(v, mesh) ? 3u : 4u);
+  return n;
+}
+
+// A flat patch of equilateral triangles, rows x columns of them.
+Mesh triangular_grid(int rows, int columns)
+{
+  std::vector<Point> points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  const double h = std::sqrt(3.) / 2.;
+  for(int r = 0; r <= rows; ++r)
+    for(int c = 0; c <= columns; ++c) points.emplace_back(c + 0.5 * (r % 2), r * h, 0.);
+  auto id = [&](int r, int c) { return std::size_t(r * (columns + 1) + c); };
+  for(int r = 0; r < rows; ++r)
+    for(int c = 0; c < columns; ++c) {
+      if(r % 2 == 0) {
+        triangles.push_back({id(r, c), id(r, c + 1), id(r + 1, c)});
+        if(c + 1 < columns) triangles.push_back({id(r, c + 1), id(r + 1, c + 1), id(r + 1, c)});
+      } else {
+        triangles.push_back({id(r, c), id(r + 1, c + 1), id(r + 1, c)});
+        if(c + 1 < columns) triangles.push_back({id(r, c), id(r, c + 1), id(r + 1, c + 1)});
+      }
+    }
+  Mesh mesh;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, mesh);
+  return mesh;
+}
+
+struct Certifying_visitor
+{
+  const Mesh* mesh = nullptr;
+  std::size_t calls = 0, failures = 0, cancel_after = std::size_t(-1);
+  bool keep_going(const NR::Angle_bounded_decimation_statistics&)
+  {
+    if(++calls % 50 == 0 && !NR::certify_angle_bounds(*mesh).is_certified()) ++failures;
+    return calls < cancel_after;
+  }
+};
+
+} // namespace
+
+TEST(Decimation, QuadricsOfPlanesAndPoints)
+{
+  NR::internal::Quadric q;
+  q.add_plane(Eigen::Vector3d(0, 0, 1), -2.);  // z = 2
+  EXPECT_DOUBLE_EQ(q(Eigen::Vector3d(5, -3, 2)), 0.);
+  EXPECT_DOUBLE_EQ(q(Eigen::Vector3d(0, 0, 5)), 9.);
+  NR::internal::Quadric p;
+  p.add_point(Eigen::Vector3d(1, 2, 3));  // equation 6.3
+  EXPECT_DOUBLE_EQ(p(Eigen::Vector3d(1, 2, 3)), 0.);
+  EXPECT_DOUBLE_EQ(p(Eigen::Vector3d(2, 4, 5)), 9.);
+  q += p;  // Q_w = Q_u + Q_v
+  EXPECT_DOUBLE_EQ(q(Eigen::Vector3d(1, 2, 5)), 9. + 4.);
+  EXPECT_EQ(q.planes, 1u);
+}
+
+// The placement QP of every edge of a fitted mesh (quadrics of equation 5.10
+// and 6.3, region F(u, v)): the fast solver agrees with CGAL's on status
+// and objective.
+TEST(Decimation, PlacementQpAgreesWithCgalQpSolver)
+{
+  Mesh mesh = fitted("pig.off", 30);
+  NR::Angle_bounded_decimation_statistics stats;
+  using Quadric_map = boost::property_map<Mesh, CGAL::dynamic_vertex_property_t<NR::internal::Quadric> >::type;
+  NR::internal::Decimation_context<Mesh, Quadric_map> context;
+  context.quadrics = get(CGAL::dynamic_vertex_property_t<NR::internal::Quadric>(), mesh);
+  context.statistics = &stats;
+  for(auto v : vertices(mesh)) {
+    NR::internal::Quadric q;
+    const Eigen::Vector3d p = NR::internal::to_eigen(mesh.point(v));
+    if(CGAL::is_border(v, mesh)) {
+      q.add_point(p);
+    } else {  // two planes through p: a rank-2 quadric, as along a crease
+      q.add_plane(Eigen::Vector3d(0, 0, 1), -p.z());
+      q.add_plane(Eigen::Vector3d(1, 0, 0), -p.x());
+    }
+    put(context.quadrics, v, q);
+  }
+  std::size_t compared = 0, optimal = 0, agree = 0;
+  for(auto e : edges(mesh)) {
+    if(compared == 1500) break;
+    const auto h = halfedge(e, mesh);
+    const NR::internal::Local_frame frame = NR::internal::collapse_frame(mesh, mesh.points(), h);
+    std::vector<NR::internal::Half_space> region;
+    if(!NR::internal::collapse_feasible_region(mesh, mesh.points(), h, 2, frame, region)) continue;
+    double eps = 0.;
+    NR::internal::Small_qp qp = context.form(source(h, mesh), target(h, mesh), frame, eps);
+    for(const auto& s : region) qp.add_constraint(s.normal, s.offset);
+    const auto fast = NR::internal::solve_small_qp(qp);
+    const auto reference = NR::internal::solve_small_qp_reference(qp);
+    ++compared;
+    if(reference.status == NR::internal::Qp_status::optimal) ++optimal;
+    if(fast.status == reference.status &&
+       (fast.status != NR::internal::Qp_status::optimal ||
+        std::abs(qp.objective(fast.x) - qp.objective(reference.x)) <= 1e-7 * (1. + std::abs(qp.objective(reference.x)))))
+      ++agree;
+  }
+  EXPECT_EQ(compared, 1500u);
+  EXPECT_GT(optimal, 100u);  // both outcomes are exercised
+  EXPECT_LT(optimal, compared);
+  EXPECT_EQ(agree, compared);
+}
+
+// A flat equilateral patch: every quadric is the same plane, so the tie
+// break decides; half the vertices go, the patch stays flat and certified,
+// and no vertex falls below the floor.
+TEST(Decimation, FlatPatchHalves)
+{
+  Mesh mesh = triangular_grid(12, 12);
+  ASSERT_TRUE(NR::certify_angle_bounds(mesh).is_certified());
+  const Topology before(mesh);
+  const std::size_t n = vertices(mesh).size();
+  const auto s = NR::angle_bounded_decimation(mesh, NR::parameters::vertex_ratio(0.5));
+  mesh.collect_garbage();
+  const Mesh reread = nonobtuse_test::written_and_reread(mesh, "flat.off");
+  EXPECT_TRUE(NR::certify_angle_bounds(reread).is_certified());
+  EXPECT_GT(s.collapses, 0u);
+  EXPECT_EQ(vertices(reread).size(), n - s.collapses);
+  const Topology after(reread);
+  EXPECT_EQ(after.euler, before.euler);
+  EXPECT_EQ(after.borders, before.borders);
+  EXPECT_EQ(after.non_manifold, 0u);
+  EXPECT_EQ(below_floor(reread), 0u);
+  for(auto v : vertices(reread)) EXPECT_LE(std::abs(reread.point(v).z()), 1e-12);  // flat up to rounding
+}
+
+// The acceptance criteria on a closed and an open sample: one decimation
+// into the levels 0.5 and 0.1; each level, re-read from its written file,
+// reaches its target, certifies, keeps the Euler characteristic, the borders
+// and the components, creates no vertex below the valence floor, and comes
+// closer to the full mesh at 50% than at 90%.
+TEST(Decimation, HierarchyOfTheSamples)
+{
+  for(const std::string name : {"sphere.off", "mesh_with_border.off"}) {
+    const Mesh full = fitted(name, 30);
+    const Topology topology(full);
+    const auto levels = NR::angle_bounded_decimation_hierarchy(full, {0.5, 0.1});
+    ASSERT_EQ(levels.size(), 2u) << name;
+    double previous = 0.;
+    for(std::size_t i = 0; i < levels.size(); ++i) {
+      const auto& level = levels[i];
+      EXPECT_TRUE(level.reached) << name << " level " << i;
+      const Mesh reread = nonobtuse_test::written_and_reread(level.mesh, "level.off");
+      EXPECT_EQ(vertices(reread).size(), level.target_vertices) << name;
+      EXPECT_TRUE(NR::certify_angle_bounds(reread).is_certified()) << name << " level " << i;
+      const Topology t(reread);
+      EXPECT_EQ(t.euler, topology.euler) << name;
+      EXPECT_EQ(t.borders, topology.borders) << name;
+      EXPECT_EQ(t.components, topology.components) << name;
+      EXPECT_EQ(t.non_manifold, 0u) << name;
+      EXPECT_LE(below_floor(reread), below_floor(full)) << name;
+      const NR::Quality_report r = NR::quality_report(reread, &full);
+      EXPECT_GT(r.distance->hausdorff_symmetric, previous) << name;
+      EXPECT_LT(r.distance->hausdorff_symmetric, 5.) << name;  // % of the diagonal
+      previous = r.distance->hausdorff_symmetric;
+    }
+  }
+}
+
+// The thesis's single greedy run (no relaxation) and early termination
+// (6.5): both stop before the target, say why, and leave a certified mesh.
+TEST(Decimation, EarlyTerminationAndTheThesisRun)
+{
+  const Mesh full = fitted("pig.off", 30);
+  Mesh strict = full;
+  const auto s = NR::angle_bounded_decimation(
+      strict, NR::parameters::combine(NR::parameters::vertex_ratio(0.1), NR::parameters::max_error(1e-4)));
+  EXPECT_EQ(s.stop_reason, NR::Decimation_stop_reason::max_error);
+  EXPECT_GT(s.stopping_error, 1e-4);
+  EXPECT_LE(s.largest_collapse_error, 1e-4);
+  EXPECT_GT(s.vertices_after, s.target_vertices);
+  EXPECT_TRUE(NR::certify_angle_bounds(strict).is_certified());
+
+  Mesh thesis = full;
+  const auto t = NR::angle_bounded_decimation(
+      thesis, NR::parameters::combine(NR::parameters::vertex_ratio(0.1), NR::parameters::relaxation(false)));
+  EXPECT_EQ(t.rounds, 1u);
+  EXPECT_EQ(t.relaxations, 0u);
+  EXPECT_EQ(t.stop_reason, NR::Decimation_stop_reason::no_collapse_left);
+  EXPECT_GT(t.collapses, 0u);
+  EXPECT_TRUE(NR::certify_angle_bounds(thesis).is_certified());
+}
+
+// The visitor sees a certified mesh at every moment and can cancel.
+TEST(Decimation, CertifiedAtEveryMomentAndCancellable)
+{
+  Mesh mesh = fitted("pig.off", 30);
+  Certifying_visitor visitor;
+  visitor.mesh = &mesh;
+  visitor.cancel_after = 1500;
+  const auto s = NR::angle_bounded_decimation(
+      mesh, NR::parameters::combine(NR::parameters::vertex_ratio(0.1),
+                                    NR::parameters::decimation_visitor(std::ref(visitor))));
+  EXPECT_EQ(s.stop_reason, NR::Decimation_stop_reason::cancelled);
+  EXPECT_EQ(visitor.failures, 0u);
+  EXPECT_GE(visitor.calls, 1500u);
+  EXPECT_TRUE(NR::certify_angle_bounds(mesh).is_certified());
+}
+
+TEST(Decimation, RefusesBadRequestsAndLeavesTheMeshAlone)
+{
+  Mesh raw = nonobtuse_test::load("pig.off");  // not nonobtuse
+  const std::size_t n = vertices(raw).size();
+  EXPECT_THROW(NR::angle_bounded_decimation(raw), std::invalid_argument);
+  EXPECT_EQ(vertices(raw).size(), n);
+  Mesh flat = triangular_grid(4, 4);
+  EXPECT_THROW(NR::angle_bounded_decimation(flat, NR::parameters::vertex_ratio(0.)), std::invalid_argument);
+  EXPECT_THROW(NR::angle_bounded_decimation(flat, NR::parameters::max_error(-1.)), std::invalid_argument);
+  EXPECT_THROW(NR::angle_bounded_decimation(flat, NR::parameters::drum_subdivisions(0)), std::invalid_argument);
+  EXPECT_THROW(NR::angle_bounded_decimation_hierarchy(flat, {0.1, 0.5}), std::invalid_argument);
+  EXPECT_THROW(NR::angle_bounded_decimation_hierarchy(flat, {1.}), std::invalid_argument);
+  EXPECT_EQ(vertices(flat).size(), 25u);
+}
