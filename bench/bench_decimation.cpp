@@ -4,9 +4,11 @@
 // the vertices removed) in one run. Per level: vertices, seconds from the
 // full mesh, why it stopped, exact certification, topology kept (Euler
 // characteristic, borders, components, manifold), and the Hausdorff distance
-// to the full-resolution nonobtuse mesh in % of its diagonal.
+// to the full-resolution nonobtuse mesh in % of its diagonal; the refusals
+// (attempts), the largest collapse error (% of the diagonal), the rounds and
+// the seconds of relaxation among the level's seconds.
 //
-//   bench_decimation [N] [--max-error PCT] mesh.off...      (N defaults to 100)
+//   bench_decimation [N] [--max-error PCT] [-k K] mesh.off...      (N defaults to 100)
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -56,7 +58,8 @@ int main(int argc, char** argv)
   }
   std::cout << std::fixed << std::setprecision(3)
             << "mesh                   full V  level  target      V   dec s  stop         QP solves  certified  "
-               "topology  Hausdorff %   refusals: empty F  valence  certification  topology\n";
+               "topology  Hausdorff %   refusals: empty F  valence  certification  topology  largest %  rounds  "
+               "relax s\n";
   for(const std::string& path : paths) {
     Mesh input, mesh;
     NR::read_triangle_mesh(path, input);
@@ -85,7 +88,8 @@ int main(int argc, char** argv)
                 << std::setw(13) << r.distance->hausdorff_symmetric << std::setw(19)
                 << level.statistics.empty_regions << std::setw(9) << level.statistics.valence_refusals
                 << std::setw(15) << level.statistics.certification_refusals << std::setw(10)
-                << level.statistics.topology_refusals << std::setw(10) << 100. * level.statistics.largest_collapse_error << std::setw(4) << level.statistics.rounds << std::setw(8) << level.statistics.relaxation_seconds << "\n"
+                << level.statistics.topology_refusals << std::setw(11) << 100. * level.statistics.largest_collapse_error
+                << std::setw(8) << level.statistics.rounds << std::setw(9) << level.statistics.relaxation_seconds << "\n"
                 << std::flush;
     }
   }

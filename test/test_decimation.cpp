@@ -161,12 +161,13 @@ TEST(Decimation, PlacementQpAgreesWithCgalQpSolver)
 
 // A flat equilateral patch: every quadric is the same plane, so the tie
 // break decides; half the vertices go, the patch stays flat and certified,
-// and no vertex falls below the floor.
+// and no vertex falls below the floor (its corners are below it already).
 TEST(Decimation, FlatPatchHalves)
 {
   Mesh mesh = triangular_grid(12, 12);
   ASSERT_TRUE(NR::certify_angle_bounds(mesh).is_certified());
   const Topology before(mesh);
+  const std::size_t low = below_floor(mesh);  // the patch's corners
   const std::size_t n = vertices(mesh).size();
   const auto s = NR::angle_bounded_decimation(mesh, NR::parameters::vertex_ratio(0.5));
   mesh.collect_garbage();
@@ -178,7 +179,7 @@ TEST(Decimation, FlatPatchHalves)
   EXPECT_EQ(after.euler, before.euler);
   EXPECT_EQ(after.borders, before.borders);
   EXPECT_EQ(after.non_manifold, 0u);
-  EXPECT_EQ(below_floor(reread), 0u);
+  EXPECT_LE(below_floor(reread), low);
   for(auto v : vertices(reread)) EXPECT_LE(std::abs(reread.point(v).z()), 1e-12);  // flat up to rounding
 }
 

@@ -11,7 +11,7 @@
 // linearization), so a single greedy run stalls near 40% of the vertices
 // removed, its last collapses costing tens of % of the diagonal. So the
 // decimation runs in rounds: each collapses while the cheapest cost stays
-// below a ceiling (sqrt of the cost, from 2.5e-4 of the diagonal, doubling
+// below a ceiling (sqrt of the cost, from 1e-3 of the diagonal, doubling
 // each round, capped by max_error), then deform-to-fit (chapter 5, certified
 // after every move) fits the decimated mesh to the full one, which gives the
 // angles room again. The quadrics carry over from round to round.
@@ -47,7 +47,7 @@ struct Angle_bounded_decimation_options
   std::size_t min_border_valence = 3;    // no v2
   double max_error = std::numeric_limits<double>::infinity();  // fraction of the diagonal
   bool relaxation = true;
-  double first_ceiling = 2.5e-4;       // fraction of the diagonal
+  double first_ceiling = 1e-3;         // fraction of the diagonal
   double relaxation_tolerance = 1e-3;  // the fit's tolerance
   int max_rounds = 64;
 };

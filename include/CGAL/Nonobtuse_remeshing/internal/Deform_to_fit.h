@@ -399,11 +399,7 @@ private:
     qp_.offsets.clear();
     for(const Half_space& h : region_) qp_.add_constraint(h.normal, h.offset);
     ++stats_.qp_solves;
-    Qp_result r = solve_small_qp(qp_);
-    if(r.status == Qp_status::trouble) {
-      ++stats_.qp_fallbacks;
-      r = solve_small_qp_reference(qp_);
-    }
+    const Qp_result r = solve_small_qp_with_fallback(qp_, &stats_.qp_fallbacks);
     if(r.status != Qp_status::optimal) {
       ++stats_.infeasible_regions;
       return false;

@@ -162,11 +162,7 @@ public:
     Small_qp qp = context_->form(profile.v0(), profile.v1(), frame, eps);
     for(const Half_space& h : region_) qp.add_constraint(h.normal, h.offset);
     ++s.qp_solves;
-    Qp_result r = solve_small_qp(qp);
-    if(r.status == Qp_status::trouble) {
-      ++s.qp_fallbacks;
-      r = solve_small_qp_reference(qp);
-    }
+    const Qp_result r = solve_small_qp_with_fallback(qp, &s.qp_fallbacks);
     if(r.status != Qp_status::optimal) {
       ++s.empty_regions;
       return boost::none;

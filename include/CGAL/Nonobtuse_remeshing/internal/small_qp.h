@@ -23,6 +23,7 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <vector>
 
@@ -165,11 +166,14 @@ inline Qp_result solve_small_qp_reference(const Small_qp& qp)
   return result;
 }
 
-/// Fast path with the reference as fallback when it reports trouble.
-inline Qp_result solve_small_qp_with_fallback(const Small_qp& qp)
+/// Fast path with the reference as fallback when it reports trouble (counted
+/// in `fallbacks` when given).
+inline Qp_result solve_small_qp_with_fallback(const Small_qp& qp, std::size_t* fallbacks = nullptr)
 {
   const Qp_result fast = solve_small_qp(qp);
-  return fast.status == Qp_status::trouble ? solve_small_qp_reference(qp) : fast;
+  if(fast.status != Qp_status::trouble) return fast;
+  if(fallbacks) ++*fallbacks;
+  return solve_small_qp_reference(qp);
 }
 
 } // namespace internal
