@@ -112,11 +112,13 @@ public:
           CGAL::parameters::vertex_point_map(vpm_).get_cost(cost).get_placement(placement).filter(filter).visitor(
               visitor));
       if(!reach_levels() || stats_.stop_reason == Decimation_stop_reason::cancelled) break;
-      // Below max_error the ceiling rises; at it (or with no collapse left
-      // under it) a round must remove 0.5% of the vertices to go on.
+      // Below max_error the ceiling rises; at max_error a round must remove
+      // 2% of the vertices to go on, with no collapse left under the ceiling
+      // 0.5%.
       const bool below_max_error = stopped_by_ceiling_ && ceiling_ < options_.max_error;
       const std::size_t removed = stats_.collapses - before;
-      if(!below_max_error && (removed == 0 || removed < vertices_ / 200)) break;
+      const std::size_t enough = stopped_by_ceiling_ ? vertices_ / 50 : vertices_ / 200;
+      if(!below_max_error && (removed == 0 || removed < enough)) break;
       if(below_max_error) ceiling_ = (std::min)(2. * ceiling_, options_.max_error);
       if(!options_.relaxation) break;
       if(removed > 0) relax(reference, closest);
