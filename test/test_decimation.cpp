@@ -201,6 +201,8 @@ TEST(Decimation, HierarchyOfTheSamples)
       EXPECT_TRUE(level.reached) << name << " level " << i;
       const Mesh reread = nonobtuse_test::written_and_reread(level.mesh, "level.off");
       EXPECT_EQ(vertices(reread).size(), level.target_vertices) << name;
+      EXPECT_EQ(level.statistics.target_vertices, level.target_vertices) << name;
+      EXPECT_EQ(level.statistics.vertices_after, level.target_vertices) << name;
       EXPECT_TRUE(NR::certify_angle_bounds(reread).is_certified()) << name << " level " << i;
       const Topology t(reread);
       EXPECT_EQ(t.euler, topology.euler) << name;

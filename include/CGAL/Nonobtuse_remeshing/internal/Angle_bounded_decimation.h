@@ -91,6 +91,7 @@ public:
     emit_ = [&](bool reached) {
       update_statistics();
       Angle_bounded_decimation_statistics level = stats_;
+      level.target_vertices = targets_[next_];
       if(reached) level.stop_reason = Decimation_stop_reason::target_reached;
       sink(next_, reached, level);
       ++next_;
