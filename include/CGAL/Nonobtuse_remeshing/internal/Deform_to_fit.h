@@ -208,6 +208,7 @@ private:
 
   bool stopped()
   {
+    if(stats_.cancelled || stats_.budget_exhausted) return true;  // once stopped, stopped (the visitor is asked once)
     if(stats_.moves >= options_.max_moves || seconds_since(start_) > options_.max_seconds) {
       stats_.budget_exhausted = true;
       return true;
