@@ -32,6 +32,7 @@ const char* reason(NR::Decimation_stop_reason r)
   case NR::Decimation_stop_reason::target_reached: return "target";
   case NR::Decimation_stop_reason::max_error: return "max-error";
   case NR::Decimation_stop_reason::no_collapse_left: return "no-collapse";
+  case NR::Decimation_stop_reason::round_limit: return "round-limit";
   case NR::Decimation_stop_reason::cancelled: return "cancelled";
   }
   return "?";

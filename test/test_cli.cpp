@@ -386,4 +386,14 @@ TEST(Cli, DecimateRefusesWithoutWriting)
     EXPECT_EQ(lines(r.err), 1u) << args << "\n" << r.err;
   }
   EXPECT_FALSE(exists(out));
+  // two outputs on one path, before any work
+  for(const std::string& args : std::vector<std::string>{
+          "decimate " + init + " -o " + out + " --ratio 0.5 --json " + out,
+          "remesh " + data("sphere.off") + " -o " + out + " --resolution 20 --lod 0.5 --json " + folder + "/out_lod1.off"}) {
+    const Outcome r = run(args);
+    EXPECT_EQ(r.code, 3) << args << "\n" << r.err;
+    EXPECT_EQ(lines(r.err), 1u) << args << "\n" << r.err;
+  }
+  EXPECT_FALSE(exists(out));
+  EXPECT_FALSE(exists(folder + "/out_lod1.off"));
 }

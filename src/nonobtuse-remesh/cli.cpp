@@ -45,6 +45,9 @@ void check_output_path(const std::string& path, const std::vector<std::string>& 
   if(::access(folder.c_str(), W_OK) != 0)
     throw NR::Output_error("cannot write '" + path + "': folder '" + folder +
                            "' does not exist or is not writable");
+  for(const std::string& input : inputs)
+    if(!input.empty() && input == path)
+      throw NR::Output_error("refusing to write '" + path + "' twice or over an input");
   struct stat target;
   if(::stat(path.c_str(), &target) != 0)
     return;  // a new file

@@ -131,6 +131,7 @@ const char* stop_reason_name(NR::Decimation_stop_reason reason)
   case NR::Decimation_stop_reason::target_reached: return "target reached";
   case NR::Decimation_stop_reason::max_error: return "stopped at --max-error";
   case NR::Decimation_stop_reason::no_collapse_left: return "no certified collapse left";
+  case NR::Decimation_stop_reason::round_limit: return "64 rounds ran";
   case NR::Decimation_stop_reason::cancelled: return "cancelled";
   }
   return "unknown";

@@ -272,7 +272,14 @@ inline void write_file_atomically(const std::string& path,
     std::remove(temporary.c_str());
     throw Output_error("cannot write '" + path + "' (folder missing or not writable?)");
   }
-  if(check && !check(temporary)) {
+  bool accepted = true;
+  try {
+    accepted = !check || check(temporary);
+  } catch(...) {
+    std::remove(temporary.c_str());  // no temporary file is left behind, whatever the check throws
+    throw;
+  }
+  if(!accepted) {
     std::remove(temporary.c_str());
     throw Output_error("refused to write '" + path + "': the written file failed its check");
   }

@@ -107,7 +107,8 @@ public:
     for(int round = 0; reach_levels() && round < options_.max_rounds; ++round) {
       ++stats_.rounds;
       const std::size_t before = stats_.collapses;
-      stopped_by_ceiling_ = false;
+      stopped_by_ceiling_ = stopped_at_max_error_ = false;
+      stats_.stopping_error = 0.;
       Surface_mesh_simplification::edge_collapse(
           mesh_, stop,
           CGAL::parameters::vertex_point_map(vpm_).get_cost(cost).get_placement(placement).filter(filter).visitor(
@@ -123,12 +124,13 @@ public:
       if(below_max_error) ceiling_ = (std::min)(2. * ceiling_, options_.max_error);
       if(!options_.relaxation) break;
       if(removed > 0) relax(reference, closest);
+      if(stats_.stop_reason == Decimation_stop_reason::cancelled) break;
     }
     if(!reach_levels()) stats_.stop_reason = Decimation_stop_reason::target_reached;
     else if(stats_.stop_reason != Decimation_stop_reason::cancelled)
-      stats_.stop_reason = stopped_by_ceiling_ && !(ceiling_ < options_.max_error)
-                               ? Decimation_stop_reason::max_error
-                               : Decimation_stop_reason::no_collapse_left;
+      stats_.stop_reason = stopped_at_max_error_ ? Decimation_stop_reason::max_error
+                           : stats_.rounds == std::size_t(options_.max_rounds) ? Decimation_stop_reason::round_limit
+                                                                            : Decimation_stop_reason::no_collapse_left;
     if(next_ < targets_.size()) emit_(false);
     emit_ = nullptr;
     update_statistics();
@@ -208,6 +210,7 @@ private:
       const double error = std::sqrt(double(cost)) / self->context_.diagonal;
       if(error > self->ceiling_) {
         self->stopped_by_ceiling_ = true;
+        self->stopped_at_max_error_ = !(self->ceiling_ < self->options_.max_error);
         s.stopping_error = error;
         return true;
       }
@@ -229,7 +232,7 @@ private:
   std::size_t next_ = 0, vertices_ = 0;
   std::function<void(bool)> emit_;
   double ceiling_ = 0.;
-  bool stopped_by_ceiling_ = false;
+  bool stopped_by_ceiling_ = false, stopped_at_max_error_ = false;
   std::chrono::steady_clock::time_point start_;
 };
 

@@ -43,6 +43,7 @@ enum class Decimation_stop_reason {
   target_reached,    ///< the target vertex count (the last level's) was reached
   max_error,         ///< the cheapest collapse left would exceed `max_error` (thesis, 6.5)
   no_collapse_left,  ///< no collapse left keeps the bounds, the valence floor and the topology
+  round_limit,       ///< 64 rounds of collapses and relaxation ran
   cancelled          ///< the visitor returned false
 };
 
@@ -58,13 +59,13 @@ struct Angle_bounded_decimation_statistics
   std::size_t empty_regions = 0;  ///< placements refused: F(u, v) empty or degenerate
   std::size_t valence_refusals = 0;        ///< placements and collapses refused by the valence floor (attempts)
   std::size_t certification_refusals = 0;  ///< collapses refused by the exact certification (attempts)
-  std::size_t topology_refusals = 0;       ///< collapses refused by CGAL's link condition or fold test
+  std::size_t topology_refusals = 0;       ///< collapses refused by CGAL's topology tests (its fold test reports none)
   std::size_t rounds = 0;            ///< runs of edge_collapse
   std::size_t relaxations = 0;       ///< deform-to-fit runs between rounds
   std::size_t relaxation_moves = 0;  ///< certified moves made by them
   double relaxation_seconds = 0.;
   double largest_collapse_error = 0.;  ///< sqrt of the largest cost collapsed
-  double stopping_error = 0.;          ///< sqrt of the cheapest cost left when a round stopped
+  double stopping_error = 0.;          ///< sqrt of the cheapest cost left when the last round stopped at its ceiling
   Decimation_stop_reason stop_reason = Decimation_stop_reason::no_collapse_left;
   double seconds = 0.;
 };
