@@ -47,7 +47,7 @@ void check_output_path(const std::string& path, const std::vector<std::string>& 
                            "' does not exist or is not writable");
   for(const std::string& input : inputs)
     if(!input.empty() && input == path)
-      throw NR::Output_error("refusing to write '" + path + "' twice or over an input");
+      throw NR::Output_error("refusing to write '" + path + "' over the input '" + input + "'");
   struct stat target;
   if(::stat(path.c_str(), &target) != 0)
     return;  // a new file
