@@ -86,16 +86,23 @@ struct Decimation_context
 
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
 
-  // The form of the file comment for the edge (v0, v1), in the frame's
-  // coordinates x_world = origin + scale x, divided by scale^2 (which leaves
-  // the minimizer alone): 1/2 x^T G x + a^T x.
-  Small_qp form(vertex_descriptor v0, vertex_descriptor v1, const Local_frame& frame, double& eps) const
+  // Q_u + Q_v of the edge (v0, v1) and the weight eps of its tie break.
+  Quadric sum(vertex_descriptor v0, vertex_descriptor v1) const
   {
     Quadric q = get(quadrics, v0);
     q += get(quadrics, v1);
-    eps = 1e-3 * q.A.trace() / 3.;
+    return q;
+  }
+  static double tie_break(const Quadric& q) { return 1e-3 * q.A.trace() / 3.; }
+
+  // The form of the file comment for the edge (v0, v1), in the frame's
+  // coordinates x_world = origin + scale x, divided by scale^2 (which leaves
+  // the minimizer alone): 1/2 x^T G x + a^T x.
+  Small_qp form(vertex_descriptor v0, vertex_descriptor v1, const Local_frame& frame) const
+  {
+    const Quadric q = sum(v0, v1);
     Small_qp qp;
-    qp.G = 2. * (q.A + eps * Eigen::Matrix3d::Identity());
+    qp.G = 2. * (q.A + tie_break(q) * Eigen::Matrix3d::Identity());
     qp.a = 2. * (q.A * frame.origin + q.b) / frame.scale;
     return qp;
   }
@@ -104,9 +111,8 @@ struct Decimation_context
   double cost(vertex_descriptor v0, vertex_descriptor v1, const Eigen::Vector3d& midpoint,
               const Eigen::Vector3d& x) const
   {
-    Quadric q = get(quadrics, v0);
-    q += get(quadrics, v1);
-    return (std::max)(0., q(x) + 1e-3 * q.A.trace() / 3. * (x - midpoint).squaredNorm());
+    const Quadric q = sum(v0, v1);
+    return (std::max)(0., q(x) + tie_break(q) * (x - midpoint).squaredNorm());
   }
 
   // The valence floor (thesis, Figure 7.5): collapsing (v0, v1) creates w
@@ -157,8 +163,7 @@ public:
       ++s.empty_regions;
       return boost::none;
     }
-    double eps = 0.;
-    const Small_qp form = context_->form(profile.v0(), profile.v1(), frame, eps);
+    const Small_qp form = context_->form(profile.v0(), profile.v1(), frame);
     // F(u, v) lies within its half-spaces without the drum (k = 0: U, V, R,
     // S, T, no trigonometry), where four empty regions in five are empty
     // already, at about a third of the cost; then the whole region.
@@ -256,8 +261,7 @@ public:
   template <typename Profile, typename Placement>
   void OnCollapsing(const Profile& profile, const Placement&)
   {
-    sum_ = get(context_->quadrics, profile.v0());
-    sum_ += get(context_->quadrics, profile.v1());
+    sum_ = context_->sum(profile.v0(), profile.v1());
   }
   template <typename Profile, typename Vertex>
   void OnCollapsed(const Profile&, Vertex kept)
