@@ -9,10 +9,13 @@
 #ifndef CGAL_NONOBTUSE_REMESHING_MESH_IO_H
 #define CGAL_NONOBTUSE_REMESHING_MESH_IO_H
 
+#include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
+
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -189,6 +192,11 @@ void check_and_repair_soup(const std::string& path, std::vector<Point>& points,
     throw Bad_input("'" + path + "' holds no valid face (empty mesh)");
 
   if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons)) {
+    const std::size_t duplicates = Polygon_mesh_processing::merge_duplicate_polygons_in_polygon_soup(points, polygons);
+    if(duplicates > 0)
+      log.repairs.push_back("merged " + std::to_string(duplicates) + " duplicate face(s) (same vertices, either orientation)");
+  }
+  if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons)) {
     const std::size_t before = points.size();
     Polygon_mesh_processing::orient_polygon_soup(points, polygons);
     if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
@@ -217,12 +225,22 @@ void read_triangle_mesh(const std::string& path, PolygonMesh& mesh, Read_log& lo
   internal::read_soup(path, points, polygons);
   internal::check_and_repair_soup(path, points, polygons, log);
 
-  std::vector<bool> used(points.size(), false);
+  // vertices used by no face are dropped, the others renumbered
+  std::vector<std::size_t> index(points.size(), std::size_t(-1));
   for(const auto& polygon : polygons)
-    for(std::size_t v : polygon) used[v] = true;
-  const std::size_t unused = std::count(used.begin(), used.end(), false);
-  if(unused > 0)
-    log.repairs.push_back("ignored " + std::to_string(unused) + " vertex(es) used by no face");
+    for(std::size_t v : polygon) index[v] = 0;
+  std::size_t kept = 0;
+  for(std::size_t v = 0; v < points.size(); ++v)
+    if(index[v] == 0) {
+      points[kept] = points[v];
+      index[v] = kept++;
+    }
+  if(kept < points.size()) {
+    log.repairs.push_back("ignored " + std::to_string(points.size() - kept) + " vertex(es) used by no face");
+    points.resize(kept);
+    for(auto& polygon : polygons)
+      for(std::size_t& v : polygon) v = index[v];
+  }
 
   clear(mesh);
   Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
@@ -310,6 +328,26 @@ void write_mesh_atomically(const std::string& path, const PolygonMesh& mesh,
                 .use_binary_mode(ext == "ply"));
       },
       check);
+}
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// A `check` for `write_mesh_atomically()` that makes the guarantee hold on
+/// the file itself: it re-reads the temporary file and accepts it only if it
+/// certifies exactly in [30, 90] degrees with as many faces as `mesh`. If
+/// `faces` is given, it receives the faces of the file. `mesh` must outlive
+/// the check.
+///
+///   write_mesh_atomically("out.off", mesh, certifying_check(mesh));  // throws Output_error if refused
+template <typename TriangleMesh>
+std::function<bool(const std::string&)> certifying_check(const TriangleMesh& mesh, std::size_t* faces = nullptr)
+{
+  return [&mesh, faces](const std::string& temporary) {
+    TriangleMesh reread;
+    read_triangle_mesh(temporary, reread);
+    const Angle_certificate certificate = certify_angle_bounds(reread);
+    if(faces) *faces = certificate.faces;
+    return certificate.is_certified() && certificate.faces == num_faces(mesh);
+  };
 }
 
 } // namespace Nonobtuse_remeshing

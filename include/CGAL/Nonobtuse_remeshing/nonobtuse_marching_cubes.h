@@ -198,7 +198,8 @@ Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, Triang
   std::vector<internal::Epick::Point_3> corners;
   for(const auto& t : in.triangles)
     for(int i = 0; i < 3; ++i) corners.push_back(t[i]);
-  const internal::Grid grid(PMP::bbox(input), result.resolution, corners);
+  // the box of the faces: vertices used by no face do not count
+  const internal::Grid grid(CGAL::bbox_3(corners.begin(), corners.end()), result.resolution, corners);
   result.cube_size = grid.cube_size();
   result.input_triangles = in.triangles.size();
   std::vector<bool> usable(in.triangles.size());

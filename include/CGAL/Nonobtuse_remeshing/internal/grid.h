@@ -41,6 +41,11 @@ public:
     const double extent = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
     if(!(extent > 0.) || !std::isfinite(extent))
       throw std::invalid_argument("the input's bounding box is flat or not finite");
+    // The sign votes and the fit's distances are products of up to six
+    // coordinate differences in double: keep them far from overflow and
+    // underflow.
+    if(extent < 1e-30 || extent > 1e30)
+      throw std::invalid_argument("the input's size is outside the supported range [1e-30, 1e30]: scale it");
     int exponent;
     const double fraction = std::frexp(extent / resolution, &exponent);  // in [0.5, 1)
     const int e = exponent - 8;
