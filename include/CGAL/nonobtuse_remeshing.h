@@ -3,12 +3,15 @@
 // exactly (after Li, "Nonobtuse meshes with guaranteed angle bounds").
 //
 // The package lives in namespace CGAL::Nonobtuse_remeshing. Stages available:
+//   nonobtuse_remesh()      the whole pipeline: the three stages below
 //   nonobtuse_marching_cubes()  the initial mesh (thesis, chapter 4)
 //   remove_bad_valence_vertices()  bad valences out, by removal and split (5.7)
 //   deform_to_fit()         the fit with constrained smoothing (chapter 5)
+//   angle_bounded_decimation(), angle_bounded_decimation_hierarchy()  (chapter 6)
 //   certify_angle_bounds()  exact certification of the angle bounds
 //   quality_report()        angles, valences, topology, defects, distances
 //   read_triangle_mesh(), write_mesh_atomically()  checked, exact file IO
+//   write_angle_histogram_svg(), write_mesh_colored_by_angle_atomically()  pictures
 
 #ifndef CGAL_NONOBTUSE_REMESHING_H
 #define CGAL_NONOBTUSE_REMESHING_H
@@ -21,5 +24,7 @@
 #include <CGAL/Nonobtuse_remeshing/remove_bad_valence_vertices.h>
 #include <CGAL/Nonobtuse_remeshing/deform_to_fit.h>
 #include <CGAL/Nonobtuse_remeshing/angle_bounded_decimation.h>
+#include <CGAL/Nonobtuse_remeshing/nonobtuse_remesh.h>
+#include <CGAL/Nonobtuse_remeshing/angle_pictures.h>
 
 #endif // CGAL_NONOBTUSE_REMESHING_H

@@ -1,8 +1,10 @@
 #include "cli.h"
 
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
+#include <CGAL/Nonobtuse_remeshing/angle_pictures.h>
 #include <CGAL/Nonobtuse_remeshing/mesh_io.h>
 
+#include <algorithm>
 #include <iostream>
 #include <sstream>
 
@@ -12,6 +14,13 @@
 namespace nonobtuse_cli {
 
 namespace NR = CGAL::Nonobtuse_remeshing;
+
+namespace {
+
+// The readers' repairs, said when the command succeeds: a refusal is one line.
+std::vector<std::string> pending_notes;
+
+} // namespace
 
 Mesh load_mesh(const std::string& path, NR::Read_log* log)
 {
@@ -31,8 +40,7 @@ Mesh load_mesh(const std::string& path, NR::Read_log* log)
     }
     std::cerr.rdbuf(cerr_buffer);
   }
-  for(const std::string& repair : used.repairs)
-    std::cerr << "note: " << path << ": " << repair << "\n";
+  for(const std::string& repair : used.repairs) pending_notes.push_back("note: " + path + ": " + repair);
   return mesh;
 }
 
@@ -84,50 +92,56 @@ bool parse_options(const std::string& name, const std::string& synopsis,
 
 int run_guarded(const std::string& name, const std::function<int()>& body)
 {
+  // A refusal is one line: the repairs made before it are counted in it.
+  const auto after_repairs = []() {
+    const std::size_t n = pending_notes.size();
+    pending_notes.clear();
+    return n == 0 ? std::string() : " (after " + std::to_string(n) + " repair(s) of the input)";
+  };
   try {
-    return body();
+    const int code = body();
+    for(const std::string& note : pending_notes) std::cerr << note << "\n";
+    pending_notes.clear();
+    return code;
   } catch(const NR::Bad_input& e) {
-    std::cerr << "nonobtuse-remesh " << name << ": bad input: " << e.what() << "\n";
+    std::cerr << "nonobtuse-remesh " << name << ": bad input: " << e.what() << after_repairs() << "\n";
     return bad_input;
   } catch(const NR::Output_error& e) {
-    std::cerr << "nonobtuse-remesh " << name << ": output error: " << e.what() << "\n";
+    std::cerr << "nonobtuse-remesh " << name << ": output error: " << e.what() << after_repairs() << "\n";
     return bad_input;
   } catch(const std::invalid_argument& e) {
-    std::cerr << "nonobtuse-remesh " << name << ": usage error: " << e.what() << "\n";
+    std::cerr << "nonobtuse-remesh " << name << ": usage error: " << e.what() << after_repairs() << "\n";
     return usage_error;
   } catch(const std::exception& e) {
-    std::cerr << "nonobtuse-remesh " << name << ": internal failure: " << e.what() << "\n";
+    std::cerr << "nonobtuse-remesh " << name << ": internal failure: " << e.what() << after_repairs() << "\n";
     return internal_failure;
   } catch(...) {
-    std::cerr << "nonobtuse-remesh " << name << ": internal failure: unknown exception\n";
+    std::cerr << "nonobtuse-remesh " << name << ": internal failure: unknown exception" << after_repairs() << "\n";
     return internal_failure;
   }
 }
 
-bool write_certified(const std::string& path, const Mesh& mesh, std::size_t& faces)
+bool write_certified(const std::string& path, const Mesh& mesh, std::size_t& faces,
+                     std::optional<NR::Angle_coloring> coloring)
 {
   faces = 0;
-  bool certified = false;
+  bool accepted = false;
+  const auto certifying = NR::certifying_check(mesh, &faces);
+  const auto check = [&](const std::string& temporary) { return accepted = certifying(temporary); };
   try {
-    NR::write_mesh_atomically(path, mesh, [&](const std::string& temporary) {
-      Mesh reread;
-      NR::read_triangle_mesh(temporary, reread);
-      const auto certificate = NR::certify_angle_bounds(reread);
-      faces = certificate.faces;
-      certified = certificate.is_certified() && faces == num_faces(mesh);
-      return certified;
-    });
+    if(coloring) NR::write_mesh_colored_by_angle_atomically(path, mesh, *coloring, check);
+    else NR::write_mesh_atomically(path, mesh, check);
   } catch(const NR::Output_error&) {
-    if(faces > 0 && !certified) return false;  // the check refused the file
+    if(faces > 0 && !accepted) return false;  // the file was written, and the check refused it
     throw;
   }
   return true;
 }
 
-void Progress_line::show(const std::string& text)
+void Progress_line::show(const std::string& text, bool force)
 {
   const auto now = std::chrono::steady_clock::now();
-  if(quiet || (shown_ && now - last_ < std::chrono::seconds(1))) return;
+  if(quiet || (!force && shown_ && now - last_ < std::chrono::seconds(1))) return;
   last_ = now;
   shown_ = true;
   std::cerr << (terminal_ ? "\r" : "") << text << (terminal_ ? "   " : "\n") << std::flush;
@@ -136,6 +150,17 @@ void Progress_line::show(const std::string& text)
 void Progress_line::done()
 {
   if(shown_ && terminal_) std::cerr << "\n";
+  shown_ = false;
+}
+
+std::string Progress_line::bar(double fraction)
+{
+  const int width = 20;
+  const double f = std::min(1., std::max(0., fraction));
+  const int filled = int(f * width + 0.5);
+  const std::string percent = std::to_string(int(f * 100. + 0.5));
+  return "[" + std::string(std::size_t(filled), '#') + std::string(std::size_t(width - filled), '-') + "] " +
+         std::string(3 - std::min<std::size_t>(3, percent.size()), ' ') + percent + "%";
 }
 
 } // namespace nonobtuse_cli

@@ -13,10 +13,11 @@
 
 #include <chrono>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
-namespace CGAL { namespace Nonobtuse_remeshing { struct Read_log; } }
+namespace CGAL { namespace Nonobtuse_remeshing { struct Read_log; enum class Angle_coloring; } }
 
 namespace nonobtuse_cli {
 
@@ -33,8 +34,9 @@ enum Exit_code : int {
 };
 
 // Reads a triangle mesh with the package's checked reader; repairs it made
-// are printed to standard error as "note:" lines and, if `log` is given,
-// kept there too.
+// are printed to standard error as "note:" lines by run_guarded() when the
+// command succeeds (a refusal only counts them) and, if `log` is given, kept
+// there too.
 Mesh load_mesh(const std::string& path, CGAL::Nonobtuse_remeshing::Read_log* log = nullptr);
 
 // Throws CGAL::Nonobtuse_remeshing::Output_error unless a file can be created
@@ -49,23 +51,28 @@ bool parse_options(const std::string& name, const std::string& synopsis,
                    const po::positional_options_description& positional,
                    int argc, char** argv, po::variables_map& vm, int& exit_code);
 
-// Runs `body`, mapping exceptions to one-line messages and exit codes.
+// Runs `body`, mapping exceptions to one-line messages and exit codes; then
+// prints the notes of load_mesh().
 int run_guarded(const std::string& name, const std::function<int()>& body);
 
 // Writes `mesh` to `path` atomically; the temporary file is re-read and
 // certified in [30, 90] degrees before it replaces anything. Returns false,
 // writing nothing, if the written file does not certify; `faces` gets the
-// faces of the written file. Throws Output_error when it cannot write.
-bool write_certified(const std::string& path, const Mesh& mesh, std::size_t& faces);
+// faces of the written file. With `coloring`, writes a PLY with faces
+// coloured by angle. Throws Output_error when it cannot write.
+bool write_certified(const std::string& path, const Mesh& mesh, std::size_t& faces,
+                     std::optional<CGAL::Nonobtuse_remeshing::Angle_coloring> coloring = std::nullopt);
 
 // A progress line on standard error, at the first call and then at most once
-// a second: rewritten in place on a terminal, a new line otherwise; nothing
-// when quiet.
+// a second (or at once when forced): rewritten in place on a terminal, a new
+// line otherwise; nothing when quiet.
 struct Progress_line
 {
   bool quiet = false;
-  void show(const std::string& text);
+  void show(const std::string& text, bool force = false);
   void done();
+  // "[#########-----------]  45%" for a fraction in [0, 1]
+  static std::string bar(double fraction);
 
 private:
   bool terminal_ = isatty(2) != 0;

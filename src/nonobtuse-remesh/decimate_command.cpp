@@ -21,14 +21,19 @@ namespace NR = CGAL::Nonobtuse_remeshing;
 namespace {
 
 // The decimation's progress line.
+// The decimation's progress line, with a bar towards the last target.
 struct Decimation_progress
 {
   Progress_line line;
+  std::string prefix;
+  std::size_t last_target = 0;
 
   bool keep_going(const NR::Angle_bounded_decimation_statistics& s)
   {
-    line.show("decimate: " + std::to_string(s.vertices_before - s.collapses) + " vertices, round " +
-              std::to_string(s.rounds) + ", " + std::to_string(s.relaxations) + " relaxations");
+    const double to_remove = double(s.vertices_before) - double(last_target);
+    line.show(prefix + "decimate " + Progress_line::bar(to_remove > 0. ? double(s.collapses) / to_remove : 1.) + " " +
+              std::to_string(s.vertices_before - s.collapses) + " vertices, round " + std::to_string(s.rounds) +
+              ", " + std::to_string(s.relaxations) + " relaxations");
     return true;
   }
 };
@@ -75,6 +80,7 @@ NR::Angle_bounded_decimation_statistics decimate(Mesh& mesh, std::size_t target,
 {
   Decimation_progress progress;
   progress.line.quiet = settings.quiet;
+  progress.last_target = target;
   const auto s = NR::angle_bounded_decimation(
       mesh, NR::parameters::combine(NR::parameters::target_vertices(target), decimation_parameters(settings, progress)));
   progress.line.done();
@@ -87,6 +93,8 @@ std::vector<NR::Decimation_level<Mesh> > decimation_levels(const Mesh& full, con
 {
   Decimation_progress progress;
   progress.line.quiet = settings.quiet;
+  progress.prefix = settings.progress_prefix;
+  progress.last_target = std::size_t(std::llround(ratios.back() * double(vertices(full).size())));
   auto levels = NR::angle_bounded_decimation_hierarchy(full, ratios, decimation_parameters(settings, progress));
   progress.line.done();
   return levels;

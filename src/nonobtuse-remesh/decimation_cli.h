@@ -24,6 +24,7 @@ struct Decimation_settings
   bool relaxation = true;
   int drum_subdivisions = 2;
   bool quiet = false;
+  std::string progress_prefix;    // e.g. "[4/4] " when a stage of remesh
 
   // --max-error, --min-valence, --min-border-valence, --no-relaxation
   void add_options(po::options_description& options);

@@ -5,9 +5,11 @@
 #include "decimation_cli.h"
 #include "json_output.h"
 
+#include <CGAL/Nonobtuse_remeshing/angle_pictures.h>
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
 #include <CGAL/Nonobtuse_remeshing/deform_to_fit.h>
 #include <CGAL/Nonobtuse_remeshing/mesh_io.h>
+#include <CGAL/Nonobtuse_remeshing/nonobtuse_remesh.h>
 #include <CGAL/Nonobtuse_remeshing/nonobtuse_marching_cubes.h>
 #include <CGAL/Nonobtuse_remeshing/quality_report.h>
 #include <CGAL/Nonobtuse_remeshing/remove_bad_valence_vertices.h>
@@ -17,6 +19,7 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include <unistd.h>
@@ -161,17 +164,93 @@ void print_fit(std::ostream& out, const NR::Deform_to_fit_statistics& s)
   if(s.budget_exhausted) out << "  note: the budget ran out before the fit converged\n";
 }
 
-// The fit's progress line.
-struct Fit_progress
+// The columns of the thesis's tables, under its names.
+// NM is counted on the output: the later stages keep it manifold.
+json table_4_1_json(const NR::Quality_report& input, const NR::Quality_report& output,
+                    const NR::Marching_cubes_result& r)
+{
+  return {{"caption", "initial mesh statistics (thesis, Table 4.1)"},
+          {"triangles_in", input.faces},
+          {"B_in", input.border_cycles},
+          {"grid", r.resolution},
+          {"triangles_out", r.triangles_out},
+          {"B_out", r.borders_out},
+          {"NM", output.non_manifold_vertices},
+          {"non_manifold_faces_removed", r.non_manifold_faces_removed},
+          {"MP", r.cubes_with_several_patches},
+          {"SF", r.faces_stitched},
+          {"PI", r.patches_ignored},
+          {"VR", {r.min_valence, r.max_valence}},
+          {"AR", {r.min_angle, r.max_angle}},
+          {"t", r.seconds}};
+}
+
+json table_7_1_json(const NR::Bad_valence_removal_statistics& s)
+{
+  return {{"caption", "removal of bad-valence vertices (thesis, Table 7.1)"},
+          {"V_in", s.vertices_before},
+          {"V_out", s.vertices_after},
+          {"v2", s.before.valence_2},
+          {"v3", s.before.valence_3()},
+          {"int_v4", s.before.interior_valence_4},
+          {"v2*", s.after.valence_2},
+          {"v3*", s.after.valence_3()},
+          {"int_v4*", s.after.interior_valence_4}};
+}
+
+json table_7_2_json(const NR::Quality_report& input, const NR::Quality_report& output,
+                    const NR::Deform_to_fit_statistics& s, bool lazy, bool early)
+{
+  return {{"caption", "optimization time and error (thesis, Table 7.2)"},
+          {"triangles_in", input.faces},
+          {"triangles_out", output.faces},
+          {"lazy_evaluation", lazy},
+          {"early_smoothing", early},
+          {"t", s.seconds},
+          {"epsilon_percent", output.distance ? json(output.distance->hausdorff_symmetric) : json(nullptr)}};
+}
+
+const char* stage_name(NR::Remeshing_stage stage)
+{
+  switch(stage) {
+  case NR::Remeshing_stage::initial_mesh: return "init";
+  case NR::Remeshing_stage::valence: return "valence";
+  case NR::Remeshing_stage::fit: return "fit";
+  }
+  return "";
+}
+
+// One progress line per stage, "[i/n] stage ...": a bar where the stage's
+// fraction is known, the fit's moves and distance where it is not.
+struct Pipeline_progress
 {
   Progress_line line;
+  int stages = 3;
+  int index = 0;
 
-  bool keep_going(const NR::Deform_to_fit_statistics& s)
+  std::string prefix() const { return "[" + std::to_string(index) + "/" + std::to_string(stages) + "] "; }
+  void stage_started(NR::Remeshing_stage stage)
+  {
+    ++index;
+    line.show(prefix() + stage_name(stage) + " " + Progress_line::bar(0.), true);
+  }
+  void stage_finished(NR::Remeshing_stage stage, double seconds)
   {
     std::ostringstream text;
-    text << "fit: " << (s.stage == NR::Deform_to_fit_stage::smoothing ? "smoothing" : "optimization") << ", "
-         << s.moves << " moves, rms vertex distance " << std::setprecision(3) << s.rms_distance << "%";
-    line.show(text.str());
+    text << prefix() << stage_name(stage) << " " << Progress_line::bar(1.) << " done in " << std::setprecision(3)
+         << seconds << " s";
+    line.show(text.str(), true);
+    line.done();
+  }
+  bool keep_going(const NR::Remeshing_progress& p)
+  {
+    if(p.fit) {
+      std::ostringstream text;
+      text << prefix() << "fit: " << (p.fit->stage == NR::Deform_to_fit_stage::smoothing ? "smoothing" : "optimization")
+           << ", " << p.fit->moves << " moves, rms vertex distance " << std::setprecision(3) << p.fit->rms_distance
+           << "%";
+      line.show(text.str());
+    }
     return true;
   }
 };
@@ -180,9 +259,11 @@ struct Fit_progress
 
 int remesh_command(int argc, char** argv)
 {
-  std::string input_path, output_path, json_path, stop_after = "fit", signs = "patches", lod;
+  std::string input_path, output_path, report_path, stop_after = "fit", signs = "patches", lod, histogram_path,
+      coloring_name;
   Decimation_settings decimation;
   int resolution = 100, drum_subdivisions = 2, quadric_rings = 0, smoothing_steps = 2;
+  long long target_vertices = 0;
   double alpha = 0.5, fit_tolerance = 1e-4, max_seconds = 0.;
   long long max_moves = 0;
   bool quiet = false;
@@ -194,6 +275,9 @@ int remesh_command(int argc, char** argv)
      "where to write the result (.off, .obj, .ply, .stl)")
     ("resolution,N", po::value<int>(&resolution)->default_value(100),
      "Marching Cubes cubes along the longest side of the input's bounding box")
+    ("target-vertices,V", po::value<long long>(&target_vertices),
+     "instead of --resolution: about this many output vertices (the resolution is chosen from the input's "
+     "area and bounding box)")
     ("stop-after", po::value<std::string>(&stop_after)->default_value("fit"),
      "last stage to run: init, valence or fit")
     ("no-valence-cleanup", "skip the removal of bad-valence vertices between init and fit")
@@ -215,17 +299,23 @@ int remesh_command(int argc, char** argv)
     ("no-early-smoothing", "fit: complete each optimization phase before smoothing")
     ("no-tangential-smoothing", "fit: smoothing term in every direction, as in the thesis")
     ("no-feature-attraction", "fit: no attraction of the input's vertices and sharp edges")
-    ("quiet,q", po::bool_switch(&quiet), "no progress line")
+    ("quiet,q", po::bool_switch(&quiet), "no progress lines")
     ("lod", po::value<std::string>(&lod),
      "levels of detail: decreasing fractions of the vertices to keep, like 0.5,0.1; level i is written "
      "next to OUTPUT as NAME_lodi.EXT")
-    ("json", po::value<std::string>(&json_path), "also write statistics and the quality report as JSON");
+    ("report", po::value<std::string>(&report_path),
+     "also write a JSON report: certification, quality against the input, the statistics of every stage "
+     "(the thesis's Tables 4.1, 7.1, 7.2) and timings")
+    ("angle-histogram", po::value<std::string>(&histogram_path),
+     "also write an SVG picture of the angle distributions of input and output, the [30, 90] band marked")
+    ("color-by-angle", po::value<std::string>(&coloring_name),
+     "smallest or largest: colour the faces of OUTPUT (and of the levels) by that angle; needs a .ply OUTPUT");
   decimation.add_options(options);
   po::positional_options_description positional;
   positional.add("input", 1);
   po::variables_map vm;
   int exit_code = success;
-  if(!parse_options("remesh", "INPUT -o OUTPUT [--resolution N] [--stop-after init|valence|fit] [options]\n\n"
+  if(!parse_options("remesh", "INPUT -o OUTPUT [--resolution N | --target-vertices V] [--lod R,R...] [options]\n\n"
                     "Remeshes INPUT into a mesh whose angles all lie in [30, 90] degrees, certified\n"
                     "exactly on the written file. Stages: init (nonobtuse Marching Cubes), valence\n"
                     "(removal of bad-valence vertices, vertex splits), fit (deform-to-fit with\n"
@@ -235,6 +325,11 @@ int remesh_command(int argc, char** argv)
     return exit_code;
 
   return run_guarded("remesh", [&]() {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    const auto seconds_since = [](Clock::time_point t) {
+      return std::chrono::duration<double>(Clock::now() - t).count();
+    };
     if(stop_after != "init" && stop_after != "valence" && stop_after != "fit")
       throw std::invalid_argument("--stop-after must be one of: init, valence, fit (got '" + stop_after + "')");
     const bool valence_cleanup = vm.count("no-valence-cleanup") == 0;
@@ -253,56 +348,53 @@ int remesh_command(int argc, char** argv)
       throw std::invalid_argument("--signs must be patches or inside-test (got '" + signs + "')");
     if(resolution < 1 || resolution > 1024)
       throw std::invalid_argument("--resolution must be between 1 and 1024");
+    if(vm.count("target-vertices") && !vm["resolution"].defaulted())
+      throw std::invalid_argument("give one of --resolution and --target-vertices");
+    if(vm.count("target-vertices") && (target_vertices < 4 || target_vertices > 100000000))
+      throw std::invalid_argument("--target-vertices must lie in [4, 100000000]");
     check_output_path(output_path, {input_path});
     if(!NR::internal::is_mesh_extension(NR::internal::file_extension(output_path)))
       throw NR::Output_error("cannot write '" + output_path + "': unsupported extension (expected .off, .obj, .ply or .stl)");
-    if(!json_path.empty()) check_output_path(json_path, {input_path, output_path});
+    if(!report_path.empty()) check_output_path(report_path, {input_path, output_path});
+    if(!histogram_path.empty()) check_output_path(histogram_path, {input_path, output_path, report_path});
+    std::optional<NR::Angle_coloring> coloring;
+    if(vm.count("color-by-angle")) {
+      if(coloring_name != "smallest" && coloring_name != "largest")
+        throw std::invalid_argument("--color-by-angle must be smallest or largest (got '" + coloring_name + "')");
+      if(NR::internal::file_extension(output_path) != "ply")
+        throw std::invalid_argument("--color-by-angle needs a .ply OUTPUT (got '" + output_path + "')");
+      coloring = coloring_name == "smallest" ? NR::Angle_coloring::smallest_angle : NR::Angle_coloring::largest_angle;
+    }
     decimation.check(vm);
     decimation.quiet = quiet;
     decimation.drum_subdivisions = drum_subdivisions;
     const std::vector<double> ratios = lod.empty() ? std::vector<double>() : parse_ratios(lod);
     if(!ratios.empty() && stop_after != "fit") throw std::invalid_argument("--lod needs the whole pipeline (no --stop-after)");
     for(std::size_t i = 1; i <= ratios.size(); ++i)
-      check_output_path(level_path(output_path, i), {input_path, output_path, json_path});
+      check_output_path(level_path(output_path, i), {input_path, output_path, report_path, histogram_path});
 
     const Mesh input = load_mesh(input_path);
     const NR::Sign_source source = signs == "patches" ? NR::Sign_source::patches : NR::Sign_source::inside_test;
     if(source == NR::Sign_source::inside_test && !CGAL::is_closed(input))
       throw NR::Bad_input("--signs inside-test needs a closed input, and '" + input_path + "' has borders");
+    const NR::Remeshing_stage last = stop_after == "init"      ? NR::Remeshing_stage::initial_mesh
+                                     : stop_after == "valence" ? NR::Remeshing_stage::valence
+                                                               : NR::Remeshing_stage::fit;
+    Pipeline_progress progress;
+    progress.line.quiet = quiet;
+    progress.stages = 1 + int(last != NR::Remeshing_stage::initial_mesh && valence_cleanup) +
+                      int(last == NR::Remeshing_stage::fit) + int(!ratios.empty());
     Mesh output;
-    NR::Marching_cubes_result init;
+    NR::Nonobtuse_remeshing_statistics stats;
     try {
-      init = NR::nonobtuse_marching_cubes(input, output,
-                                          NR::parameters::combine(NR::parameters::resolution(resolution),
-                                                                  NR::parameters::sign_source(source)));
-    } catch(const std::invalid_argument& e) {  // the arguments were checked: it is the input
-      throw NR::Bad_input("'" + input_path + "': " + e.what());
-    }
-    if(num_faces(output) == 0)
-      throw NR::Bad_input("'" + input_path + "' is too small or too thin for resolution " +
-                          std::to_string(resolution) + ": the initial mesh is empty");
-    print_initial_mesh(std::cout, init);
-
-    if(!NR::certify_angle_bounds(output).is_certified()) {  // cannot happen: chapter 4's guarantee
-      std::cerr << "nonobtuse-remesh remesh: the initial mesh does not certify; nothing written\n";
-      return int(certification_failed);
-    }
-    NR::Bad_valence_removal_statistics valence;
-    if(stop_after != "init" && valence_cleanup) {
-      valence = NR::remove_bad_valence_vertices(
-          output, NR::parameters::combine(NR::parameters::vertex_split(vm.count("no-vertex-split") == 0),
-                                          NR::parameters::drum_subdivisions(drum_subdivisions)));
-      output.collect_garbage();
-      print_valence(std::cout, valence);
-    }
-
-    NR::Deform_to_fit_statistics fit;
-    if(stop_after == "fit") {
-      Fit_progress progress;
-      progress.line.quiet = quiet;
-      fit = NR::deform_to_fit(
-          output, input,
+      stats = NR::nonobtuse_remesh(
+          input, output,
           NR::parameters::combine(
+              vm.count("target-vertices") ? NR::parameters::target_vertices(std::size_t(target_vertices))
+                                          : NR::parameters::target_vertices(std::size_t(0)),
+              NR::parameters::resolution(resolution), NR::parameters::sign_source(source),
+              NR::parameters::stop_after(last), NR::parameters::valence_cleanup(valence_cleanup),
+              NR::parameters::vertex_split(vm.count("no-vertex-split") == 0),
               NR::parameters::alpha(alpha), NR::parameters::drum_subdivisions(drum_subdivisions),
               NR::parameters::quadric_rings(quadric_rings), NR::parameters::smoothing_steps(smoothing_steps),
               NR::parameters::fit_tolerance(fit_tolerance),
@@ -312,32 +404,49 @@ int remesh_command(int argc, char** argv)
               NR::parameters::early_smoothing(vm.count("no-early-smoothing") == 0),
               NR::parameters::tangential_smoothing(vm.count("no-tangential-smoothing") == 0),
               NR::parameters::attract_features(vm.count("no-feature-attraction") == 0),
-              NR::parameters::fit_visitor(std::ref(progress))));
-      progress.line.done();
-      print_fit(std::cout, fit);
+              NR::parameters::remeshing_visitor(std::ref(progress))));
+    } catch(const std::invalid_argument& e) {  // the arguments were checked: it is the input
+      throw NR::Bad_input("'" + input_path + "': " + e.what());
     }
+    if(stats.trial_resolution > 0)
+      std::cout << "resolution " << stats.resolution << " for about " << stats.target_vertices
+                << " vertices (resolution " << stats.trial_resolution << " from the area gave "
+                << "a mesh too far from the target)\n";
+    else if(stats.target_vertices > 0)
+      std::cout << "resolution " << stats.resolution << " for about " << stats.target_vertices << " vertices\n";
+    if(stats.degenerate_faces_removed > 0)
+      std::cout << "note: " << stats.degenerate_faces_removed
+                << " zero-area input face(s) removed first (CGAL's remove_degenerate_faces, on a copy)\n";
+    print_initial_mesh(std::cout, stats.initial_mesh);
+    if(stats.valence_run) print_valence(std::cout, stats.valence);
+    if(stats.fit_run) print_fit(std::cout, stats.fit);
 
     // The file itself must certify: it is re-read and certified before it
     // replaces anything.
+    const auto write_start = Clock::now();
     std::size_t written_faces = 0;
-    if(!write_certified(output_path, output, written_faces)) {
+    if(!write_certified(output_path, output, written_faces, coloring)) {
       std::cerr << "nonobtuse-remesh remesh: certification of the written file failed; nothing written\n";
       return int(certification_failed);
     }
-    std::cout << "wrote " << output_path << ": " << written_faces
+    double write_seconds = seconds_since(write_start);
+    std::cout << "wrote " << output_path << ": " << vertices(output).size() << " vertices, " << written_faces
               << " faces, certified in [30, 90] degrees on the written file\n";
 
     // Levels of detail: one decimation of the output, each level certified
     // on its written file and measured against the full-resolution mesh.
     json levels_json = json::array();
+    double levels_seconds = 0.;
     if(!ratios.empty()) {
+      const auto levels_start = Clock::now();
+      decimation.progress_prefix = "[" + std::to_string(progress.stages) + "/" + std::to_string(progress.stages) + "] ";
       const auto levels = decimation_levels(output, ratios, decimation);
       for(std::size_t i = 0; i < levels.size(); ++i) {
         const auto& level = levels[i];
         const std::string path = level_path(output_path, i + 1);
         print_decimation(std::cout, level.statistics);
         std::size_t faces = 0;
-        if(!write_certified(path, level.mesh, faces)) {
+        if(!write_certified(path, level.mesh, faces, coloring)) {
           std::cerr << "nonobtuse-remesh remesh: certification of the written level " << path
                     << " failed; it is not written\n";
           return int(certification_failed);
@@ -359,19 +468,53 @@ int remesh_command(int argc, char** argv)
         l["report_against_full_resolution"] = report_to_json(path, report, {});
         levels_json.push_back(l);
       }
+      levels_seconds = seconds_since(levels_start);
     }
 
-    if(!json_path.empty()) {
+    if(!histogram_path.empty()) {
+      const auto base_name = [](const std::string& path) { return path.substr(path.find_last_of('/') + 1); };
+      NR::write_angle_histogram_svg(histogram_path, input, output, "input " + base_name(input_path),
+                                    "output " + base_name(output_path));
+      std::cout << "wrote " << histogram_path << ": angle histograms of input and output\n";
+    }
+
+    if(!report_path.empty()) {
+      const auto report_start = Clock::now();
       const NR::Quality_report report = NR::quality_report(output, &input);
+      const NR::Quality_report input_report = NR::quality_report(input);
       json j;
       j["input"] = input_path;
       j["output"] = output_path;
-      j["init"] = initial_mesh_json(init);
-      if(stop_after != "init" && valence_cleanup) j["valence"] = valence_json(valence);
-      if(stop_after == "fit") j["fit"] = fit_json(fit);
+      j["resolution"] = stats.resolution;
+      if(stats.target_vertices > 0) {
+        j["target_vertices"] = stats.target_vertices;
+        if(stats.trial_resolution > 0) j["trial_resolution"] = stats.trial_resolution;
+      }
+      j["certification"] = {{"written_file", output_path},
+                            {"certified", report.certified},
+                            {"faces", report.faces},
+                            {"min_angle", report.min_angle},
+                            {"max_angle", report.max_angle},
+                            {"levels_certified", std::size_t(levels_json.size())}};
+      j["table_4_1"] = table_4_1_json(input_report, report, stats.initial_mesh);
+      if(stats.valence_run) j["table_7_1"] = table_7_1_json(stats.valence);
+      if(stats.fit_run)
+        j["table_7_2"] = table_7_2_json(input_report, report, stats.fit, vm.count("no-lazy-evaluation") == 0,
+                                        vm.count("no-early-smoothing") == 0);
+      j["init"] = initial_mesh_json(stats.initial_mesh);
+      if(stats.valence_run) j["valence"] = valence_json(stats.valence);
+      if(stats.fit_run) j["fit"] = fit_json(stats.fit);
       j["output_report"] = report_to_json(output_path, report, {});
       if(!ratios.empty()) j["levels"] = levels_json;
-      write_json_atomically(json_path, j);
+      j["timings"] = {{"init", stats.initial_mesh.seconds},
+                      {"valence", stats.valence_run ? stats.valence.seconds : 0.},
+                      {"fit", stats.fit_run ? stats.fit.seconds : 0.},
+                      {"pipeline", stats.seconds},
+                      {"write_and_certify", write_seconds},
+                      {"levels", levels_seconds},
+                      {"report", seconds_since(report_start)},
+                      {"total", seconds_since(start)}};
+      write_json_atomically(report_path, j);
     }
     return int(success);
   });

@@ -19,6 +19,39 @@
 namespace CGAL {
 namespace Nonobtuse_remeshing {
 
+namespace internal {
+
+// Reads and checks the fit's named parameters; throws std::invalid_argument
+// for one out of range.
+template <typename NamedParameters>
+Deform_to_fit_options deform_to_fit_options(const NamedParameters& np, int& rings)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  internal::Deform_to_fit_options o;  // its members hold the defaults
+  o.alpha = choose_parameter(get_parameter(np, internal_np::alpha), o.alpha);
+  o.drum_subdivisions = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), o.drum_subdivisions);
+  o.smoothing_steps = choose_parameter(get_parameter(np, internal_np::smoothing_steps), o.smoothing_steps);
+  o.tolerance = choose_parameter(get_parameter(np, internal_np::fit_tolerance), o.tolerance);
+  o.max_moves = choose_parameter(get_parameter(np, internal_np::max_moves), o.max_moves);
+  o.max_seconds = choose_parameter(get_parameter(np, internal_np::max_seconds), o.max_seconds);
+  o.lazy_evaluation = choose_parameter(get_parameter(np, internal_np::lazy_evaluation), o.lazy_evaluation);
+  o.early_smoothing = choose_parameter(get_parameter(np, internal_np::early_smoothing), o.early_smoothing);
+  o.tangential_smoothing = choose_parameter(get_parameter(np, internal_np::tangential_smoothing), o.tangential_smoothing);
+  o.attract_features = choose_parameter(get_parameter(np, internal_np::attract_features), o.attract_features);
+  rings = choose_parameter(get_parameter(np, internal_np::quadric_rings), 0);
+  if(!(o.alpha >= 0. && o.alpha <= 1.)) throw std::invalid_argument("alpha must lie in [0, 1]");
+  if(o.drum_subdivisions < 1 || o.drum_subdivisions > 16)
+    throw std::invalid_argument("the drum subdivisions k must lie in [1, 16]");
+  if(rings < 0 || rings > 4) throw std::invalid_argument("the quadric rings r must lie in [0, 4]");
+  if(o.smoothing_steps < 0) throw std::invalid_argument("the smoothing steps must be at least 0");
+  if(!(o.tolerance > 0. && o.tolerance < 1.)) throw std::invalid_argument("the fit tolerance must lie in (0, 1)");
+  if(!(o.max_seconds >= 0.)) throw std::invalid_argument("the time budget must be at least 0");
+  return o;
+}
+
+} // namespace internal
+
 /// \ingroup PkgNonobtuseRemeshingRef
 /// Default visitor of `deform_to_fit()`: never cancels. A visitor has
 /// `bool keep_going(const Deform_to_fit_statistics&)`, called before every
@@ -72,25 +105,8 @@ Deform_to_fit_statistics deform_to_fit(TriangleMesh& mesh, const TriangleMesh& i
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  internal::Deform_to_fit_options o;  // its members hold the defaults
-  o.alpha = choose_parameter(get_parameter(np, internal_np::alpha), o.alpha);
-  o.drum_subdivisions = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), o.drum_subdivisions);
-  o.smoothing_steps = choose_parameter(get_parameter(np, internal_np::smoothing_steps), o.smoothing_steps);
-  o.tolerance = choose_parameter(get_parameter(np, internal_np::fit_tolerance), o.tolerance);
-  o.max_moves = choose_parameter(get_parameter(np, internal_np::max_moves), o.max_moves);
-  o.max_seconds = choose_parameter(get_parameter(np, internal_np::max_seconds), o.max_seconds);
-  o.lazy_evaluation = choose_parameter(get_parameter(np, internal_np::lazy_evaluation), o.lazy_evaluation);
-  o.early_smoothing = choose_parameter(get_parameter(np, internal_np::early_smoothing), o.early_smoothing);
-  o.tangential_smoothing = choose_parameter(get_parameter(np, internal_np::tangential_smoothing), o.tangential_smoothing);
-  o.attract_features = choose_parameter(get_parameter(np, internal_np::attract_features), o.attract_features);
-  const int rings = choose_parameter(get_parameter(np, internal_np::quadric_rings), 0);
-  if(!(o.alpha >= 0. && o.alpha <= 1.)) throw std::invalid_argument("alpha must lie in [0, 1]");
-  if(o.drum_subdivisions < 1 || o.drum_subdivisions > 16)
-    throw std::invalid_argument("the drum subdivisions k must lie in [1, 16]");
-  if(rings < 0 || rings > 4) throw std::invalid_argument("the quadric rings r must lie in [0, 4]");
-  if(o.smoothing_steps < 0) throw std::invalid_argument("the smoothing steps must be at least 0");
-  if(!(o.tolerance > 0. && o.tolerance < 1.)) throw std::invalid_argument("the fit tolerance must lie in (0, 1)");
-  if(!(o.max_seconds >= 0.)) throw std::invalid_argument("the time budget must be at least 0");
+  int rings = 0;
+  const internal::Deform_to_fit_options o = internal::deform_to_fit_options(np, rings);
   if(num_faces(input) == 0) throw std::invalid_argument("deform_to_fit: the input has no face");
   if(!is_triangle_mesh(input)) throw std::invalid_argument("deform_to_fit: the input is not a triangle mesh");
   if(!certify_angle_bounds(mesh).is_certified())

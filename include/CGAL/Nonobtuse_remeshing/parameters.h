@@ -50,7 +50,10 @@ namespace internal_np {
   X(min_border_valence_t,                                                       \
     min_border_valence)                   /* decimation: valence floor */    \
   X(decimation_visitor_t, decimation_visitor) /* progress, cancellation */ \
-  X(relaxation_t, relaxation)             /* decimation: fit between rounds */
+  X(relaxation_t, relaxation)             /* decimation: fit between rounds */ \
+  X(valence_cleanup_t, valence_cleanup)   /* pipeline: run section 5.7 */    \
+  X(stop_after_t, stop_after)             /* pipeline: last stage to run */  \
+  X(remeshing_visitor_t, remeshing_visitor) /* pipeline: progress, cancel */
 
 #define CGAL_NONOBTUSE_DECLARE_TAG(TAG, NAME) enum TAG { NAME };
 CGAL_NONOBTUSE_TAGS(CGAL_NONOBTUSE_DECLARE_TAG)

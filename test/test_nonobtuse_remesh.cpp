@@ -1,0 +1,162 @@
+// The whole pipeline, nonobtuse_remesh(): the same mesh as its stages run by
+// hand, a resolution chosen for a vertex count, the visitor's stages and
+// cancellation (certified on the written file either way), and refusals that
+// leave the output empty.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/nonobtuse_remeshing.h>
+
+#include <gtest/gtest.h>
+
+#include "test_support.h"
+
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace NR = CGAL::Nonobtuse_remeshing;
+using nonobtuse_test::Mesh;
+
+namespace {
+
+bool certified_on_file(const Mesh& mesh, const std::string& name)
+{
+  const Mesh reread = nonobtuse_test::written_and_reread(mesh, name);
+  return num_faces(reread) == num_faces(mesh) && NR::certify_angle_bounds(reread).is_certified();
+}
+
+// Records the calls; cancels at call number `cancel_at` (0: never).
+struct Recording_visitor
+{
+  std::vector<std::string> events;
+  std::size_t calls = 0, cancel_at = 0, fit_calls = 0;
+  void stage_started(NR::Remeshing_stage s) { events.push_back("start " + std::to_string(int(s))); }
+  void stage_finished(NR::Remeshing_stage s, double seconds)
+  {
+    EXPECT_GE(seconds, 0.);
+    events.push_back("end " + std::to_string(int(s)));
+  }
+  bool keep_going(const NR::Remeshing_progress& p)
+  {
+    if(p.fit) {
+      EXPECT_EQ(p.stage, NR::Remeshing_stage::fit);
+      EXPECT_EQ(p.fraction, -1.);
+      ++fit_calls;
+    } else {
+      EXPECT_TRUE(p.fraction == 0. || p.fraction == 1.);
+    }
+    return cancel_at == 0 || ++calls < cancel_at;
+  }
+};
+
+} // namespace
+
+// The pipeline is its three stages: the same vertices, bit for bit, as
+// running them by hand on an open input; the statistics are theirs.
+TEST(NonobtuseRemesh, IsItsStages)
+{
+  const Mesh input = nonobtuse_test::load("mesh_with_border.off");
+  Mesh by_hand;
+  NR::nonobtuse_marching_cubes(input, by_hand, NR::parameters::resolution(30));
+  const auto valence = NR::remove_bad_valence_vertices(by_hand);
+  by_hand.collect_garbage();
+  const auto fit = NR::deform_to_fit(by_hand, input);
+
+  Mesh output;
+  Recording_visitor visitor;
+  const NR::Nonobtuse_remeshing_statistics s =
+      NR::nonobtuse_remesh(input, output, NR::parameters::combine(NR::parameters::resolution(30),
+                                                                  NR::parameters::remeshing_visitor(std::ref(visitor))));
+  EXPECT_EQ(s.resolution, 30);
+  EXPECT_FALSE(s.cancelled);
+  EXPECT_TRUE(s.valence_run && s.fit_run);
+  EXPECT_EQ(s.valence.vertices_after, valence.vertices_after);
+  EXPECT_EQ(s.fit.moves, fit.moves);
+  EXPECT_TRUE(s.initial_mesh.face_patch.empty());
+  ASSERT_EQ(vertices(output).size(), vertices(by_hand).size());
+  EXPECT_FALSE(output.has_garbage());
+  auto a = vertices(output).begin();
+  for(auto v : vertices(by_hand)) EXPECT_EQ(output.point(*a++), by_hand.point(v));
+  EXPECT_TRUE(certified_on_file(output, "pipeline.off"));
+  EXPECT_EQ(NR::quality_report(output).border_cycles, NR::quality_report(input).border_cycles);
+  EXPECT_EQ(visitor.events, (std::vector<std::string>{"start 0", "end 0", "start 1", "end 1", "start 2", "end 2"}));
+  EXPECT_GT(visitor.fit_calls, 0u);
+}
+
+// target_vertices chooses the resolution: within 15% of the target on a
+// curved closed mesh, an open one, and an axis-aligned box whose vertex
+// density the area formula overestimates (its initial mesh is redone).
+TEST(NonobtuseRemesh, TargetVertices)
+{
+  for(const std::string name : {"sphere.off", "mesh_with_border.off", "cube-meshed.off"}) {
+    const Mesh input = nonobtuse_test::load(name);
+    Mesh output;
+    const auto s = NR::nonobtuse_remesh(
+        input, output,
+        NR::parameters::combine(NR::parameters::target_vertices(std::size_t(3000)),
+                                NR::parameters::stop_after(NR::Remeshing_stage::valence)));
+    const double ratio = double(vertices(output).size()) / 3000.;
+    EXPECT_GT(ratio, 0.85) << name;
+    EXPECT_LT(ratio, 1.15) << name;
+    EXPECT_EQ(s.target_vertices, 3000u);
+    if(name == "cube-meshed.off") {  // half the density of curved surfaces: redone finer
+      EXPECT_GT(s.trial_resolution, 0);
+      EXPECT_LT(s.trial_resolution, s.resolution);
+    }
+    EXPECT_TRUE(NR::certify_angle_bounds(output).is_certified()) << name;
+  }
+  EXPECT_EQ(NR::resolution_for_target_vertices(nonobtuse_test::load("sphere.off"), 1u), 1);
+  EXPECT_EQ(NR::resolution_for_target_vertices(nonobtuse_test::load("sphere.off"), 1000000000u), 1024);
+}
+
+// A cancel during the fit ends the pipeline with a certified output; a
+// cancel before anything leaves it empty; stop_after ends early.
+TEST(NonobtuseRemesh, CancellationAndStopAfter)
+{
+  const Mesh input = nonobtuse_test::load("pig.off");
+  Mesh output;
+  Recording_visitor visitor;
+  visitor.cancel_at = 200;  // stage-boundary calls come first, then the fit's
+  auto s = NR::nonobtuse_remesh(input, output, NR::parameters::combine(NR::parameters::resolution(40),
+                                                                      NR::parameters::remeshing_visitor(std::ref(visitor))));
+  EXPECT_TRUE(s.cancelled);
+  EXPECT_TRUE(s.fit_run && s.fit.cancelled);
+  EXPECT_EQ(visitor.calls, 200u) << "no call after the cancel";
+  EXPECT_GT(num_faces(output), 0u);
+  EXPECT_TRUE(certified_on_file(output, "cancelled.off"));
+
+  Recording_visitor at_once;
+  at_once.cancel_at = 1;
+  s = NR::nonobtuse_remesh(input, output, NR::parameters::remeshing_visitor(std::ref(at_once)));
+  EXPECT_TRUE(s.cancelled);
+  EXPECT_EQ(num_faces(output), 0u);
+  EXPECT_TRUE(at_once.events.empty());
+
+  s = NR::nonobtuse_remesh(input, output, NR::parameters::combine(NR::parameters::resolution(40),
+                                                                 NR::parameters::stop_after(NR::Remeshing_stage::initial_mesh)));
+  EXPECT_FALSE(s.valence_run || s.fit_run || s.cancelled);
+  EXPECT_EQ(vertices(output).size(), s.initial_mesh.vertices_out);
+  EXPECT_TRUE(NR::certify_angle_bounds(output, NR::parameters::min_angle(35.26)).is_certified());
+}
+
+// Bad parameters and inputs throw before any work and leave the output empty.
+TEST(NonobtuseRemesh, Refusals)
+{
+  const Mesh input = nonobtuse_test::load("sphere.off");
+  Mesh output = input;
+  EXPECT_THROW(NR::nonobtuse_remesh(input, output, NR::parameters::alpha(2.)), std::invalid_argument);
+  EXPECT_EQ(num_faces(output), 0u);
+  output = input;
+  EXPECT_THROW(NR::nonobtuse_remesh(input, output, NR::parameters::resolution(0)), std::invalid_argument);
+  EXPECT_EQ(num_faces(output), 0u);
+  EXPECT_THROW(NR::nonobtuse_remesh(input, output,
+                                    NR::parameters::combine(NR::parameters::valence_cleanup(false),
+                                                            NR::parameters::stop_after(NR::Remeshing_stage::valence))),
+               std::invalid_argument);
+  EXPECT_THROW(NR::nonobtuse_remesh(Mesh(), output), std::invalid_argument);
+  // too coarse a grid for the input: an empty initial mesh is refused
+  EXPECT_THROW(NR::nonobtuse_remesh(input, output, NR::parameters::resolution(1)), std::invalid_argument);
+  EXPECT_EQ(num_faces(output), 0u);
+}
