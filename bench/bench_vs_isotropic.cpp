@@ -1,0 +1,97 @@
+// What the guarantee costs: each input remeshed by our pipeline
+// (nonobtuse_remesh at resolution N) and by CGAL's isotropic_remeshing, its
+// target edge length tuned until its output has our vertex count (within
+// 2%, at most 6 runs; the seconds are those of its last run). Per method:
+// seconds, vertices, min and max angle, % of the corners above 90 and below
+// 30 degrees (exact predicates), and the symmetric Hausdorff distance to the
+// input in % of its bounding-box diagonal. Not a test: run by hand, numbers
+// go to the README and the issue notes.
+//
+//   bench_vs_isotropic [N] [--iterations I] mesh.off...   (N defaults to 100, I to 3)
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/nonobtuse_remeshing.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/remesh.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <iomanip>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace NR = CGAL::Nonobtuse_remeshing;
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+void row(const std::string& name, const char* method, double seconds, const Mesh& mesh, const Mesh& input)
+{
+  const NR::Angle_certificate c = NR::certify_angle_bounds(mesh);
+  const NR::Quality_report q = NR::quality_report(mesh, &input);
+  const double corners = 3. * double(c.faces);
+  std::cout << std::left << std::setw(20) << name << std::setw(11) << method << std::right << std::fixed
+            << std::setprecision(2) << std::setw(8) << seconds << std::setw(9) << vertices(mesh).size()
+            << std::setw(9) << c.min_angle << std::setw(9) << c.max_angle << std::setprecision(3) << std::setw(9)
+            << 100. * double(c.too_large_corners) / corners << std::setw(9)
+            << 100. * double(c.too_small_corners) / corners << std::setw(11) << q.distance->hausdorff_symmetric
+            << "\n"
+            << std::defaultfloat;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  int resolution = 100, iterations = 3;
+  std::vector<std::string> paths;
+  for(int i = 1; i < argc; ++i) {
+    if(std::strcmp(argv[i], "--iterations") == 0 && i + 1 < argc) iterations = std::atoi(argv[++i]);
+    else if(std::isdigit(static_cast<unsigned char>(argv[i][0]))) resolution = std::atoi(argv[i]);
+    else paths.push_back(argv[i]);
+  }
+  if(paths.empty()) {
+    std::cerr << "usage: bench_vs_isotropic [N] [--iterations I] mesh.off...\n";
+    return 2;
+  }
+  std::cout << "N = " << resolution << ", isotropic_remeshing with " << iterations << " iterations\n"
+            << "mesh                method      seconds vertices  min-ang  max-ang    %>90     %<30  Hausdorff%\n";
+  for(const std::string& path : paths) {
+    const std::string name = path.substr(path.find_last_of('/') + 1);
+    Mesh input;
+    NR::read_triangle_mesh(path, input);
+
+    Mesh ours;
+    auto start = std::chrono::steady_clock::now();
+    NR::nonobtuse_remesh(input, ours, NR::parameters::resolution(resolution));
+    row(name, "nonobtuse", seconds_since(start), ours, input);
+
+    // an equilateral mesh of edge l has about 2 A / (sqrt(3) l^2) vertices
+    const double target = double(vertices(ours).size());
+    double length = std::sqrt(2. * PMP::area(input) / (std::sqrt(3.) * target));
+    Mesh iso;
+    double seconds = 0.;
+    for(int run = 0; run < 6; ++run) {
+      iso = input;
+      start = std::chrono::steady_clock::now();
+      PMP::isotropic_remeshing(faces(iso), length, iso, CGAL::parameters::number_of_iterations(iterations));
+      seconds = seconds_since(start);
+      iso.collect_garbage();
+      const double ratio = double(vertices(iso).size()) / target;
+      if(std::abs(ratio - 1.) < 0.02) break;
+      length *= std::sqrt(ratio);
+    }
+    row(name, "isotropic", seconds, iso, input);
+  }
+  return 0;
+}
