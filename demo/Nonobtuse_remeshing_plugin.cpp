@@ -424,7 +424,9 @@ bool Polyhedron_demo_nonobtuse_remeshing_plugin::run_remesh(int resolution, int 
     report_error(tr("Nonobtuse remesh: select a surface mesh item first"), interactive);
     return false;
   }
+  // the run processes events: the item may be gone when it ends
   const Scene_interface::Item_id input_id = scene->item_id(item);
+  const QString input_name = item->name();
   SMesh input;
   CGAL::copy_face_graph(*item->face_graph(), input);  // no garbage, no display properties
   SMesh output;
@@ -444,14 +446,14 @@ bool Polyhedron_demo_nonobtuse_remeshing_plugin::run_remesh(int resolution, int 
         stats = NR::nonobtuse_remesh(input, output,
                                      NR::parameters::combine(NR::parameters::resolution(resolution), common));
     } catch(const std::exception& e) {
-      report_error(tr("Nonobtuse remesh of %1 failed: %2").arg(item->name()).arg(QString::fromUtf8(e.what())),
+      report_error(tr("Nonobtuse remesh of %1 failed: %2").arg(input_name).arg(QString::fromUtf8(e.what())),
                    interactive);
       return false;
     }
   }
   if(num_faces(output) == 0) {
     report(tr("Nonobtuse remesh of %1: %2, no mesh to add")
-               .arg(item->name())
+               .arg(input_name)
                .arg(stats.cancelled ? tr("cancelled") : tr("the result is empty (resolution too small?)")),
            true);
     return false;
@@ -460,7 +462,7 @@ bool Polyhedron_demo_nonobtuse_remeshing_plugin::run_remesh(int resolution, int 
   const auto certificate = NR::certify_angle_bounds(output);
   const QString summary =
       tr("Nonobtuse remesh of %1 (resolution %2, alpha %3, smoothing %4)%5: %6 vertices, %7 faces in %8 s; %9")
-          .arg(item->name())
+          .arg(input_name)
           .arg(stats.resolution)
           .arg(alpha)
           .arg(smoothing_steps)
@@ -469,8 +471,8 @@ bool Polyhedron_demo_nonobtuse_remeshing_plugin::run_remesh(int resolution, int 
           .arg(qulonglong(num_faces(output)))
           .arg(stats.seconds, 0, 'f', 2)
           .arg(certificate_summary(certificate));
-  const QString name = tr("%1 (nonobtuse, N=%2)").arg(item->name()).arg(stats.resolution);
-  add_result(qobject_cast<Scene_surface_mesh_item*>(scene->item(input_id)), std::move(output), name, hide_input);
+  const QString name = tr("%1 (nonobtuse, N=%2)").arg(input_name).arg(stats.resolution);
+  add_result(scene->item(input_id) == item ? item : nullptr, std::move(output), name, hide_input);
   report(summary, !certificate.is_certified());
   if(interactive) show_summary(tr("Nonobtuse remeshing"), summary);
   return certificate.is_certified();
@@ -523,7 +525,9 @@ bool Polyhedron_demo_nonobtuse_remeshing_plugin::run_decimation(double ratio, do
     report_error(tr("Angle-bounded decimation: select a surface mesh item first"), interactive);
     return false;
   }
+  // the run processes events: the item may be gone when it ends
   const Scene_interface::Item_id input_id = scene->item_id(item);
+  const QString input_name = item->name();
   SMesh mesh;
   CGAL::copy_face_graph(*item->face_graph(), mesh);
   try {
@@ -555,7 +559,7 @@ bool Polyhedron_demo_nonobtuse_remeshing_plugin::run_decimation(double ratio, do
       else
         stats = NR::angle_bounded_decimation(mesh, common);
     } catch(const std::exception& e) {
-      report_error(tr("Angle-bounded decimation of %1 failed: %2").arg(item->name()).arg(QString::fromUtf8(e.what())),
+      report_error(tr("Angle-bounded decimation of %1 failed: %2").arg(input_name).arg(QString::fromUtf8(e.what())),
                    interactive);
       return false;
     }
@@ -564,7 +568,7 @@ bool Polyhedron_demo_nonobtuse_remeshing_plugin::run_decimation(double ratio, do
   const auto certificate = NR::certify_angle_bounds(mesh);
   const QString summary = tr("Angle-bounded decimation of %1 (ratio %2, max error %3): %4 -> %5 vertices, "
                              "%6 collapses in %7 s (%8); %9")
-                              .arg(item->name())
+                              .arg(input_name)
                               .arg(ratio)
                               .arg(max_error_percent > 0. ? tr("%1 %").arg(max_error_percent) : tr("none"))
                               .arg(qulonglong(before))
@@ -573,8 +577,8 @@ bool Polyhedron_demo_nonobtuse_remeshing_plugin::run_decimation(double ratio, do
                               .arg(stats.seconds, 0, 'f', 2)
                               .arg(QString::fromLatin1(stop_reason_name(stats.stop_reason)))
                               .arg(certificate_summary(certificate));
-  const QString name = tr("%1 (decimated %2)").arg(item->name()).arg(ratio);
-  add_result(qobject_cast<Scene_surface_mesh_item*>(scene->item(input_id)), std::move(mesh), name, true);
+  const QString name = tr("%1 (decimated %2)").arg(input_name).arg(ratio);
+  add_result(scene->item(input_id) == item ? item : nullptr, std::move(mesh), name, true);
   report(summary, !certificate.is_certified());
   if(interactive) show_summary(tr("Angle-bounded decimation"), summary);
   return certificate.is_certified();

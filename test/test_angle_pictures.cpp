@@ -32,27 +32,13 @@
 namespace NR = CGAL::Nonobtuse_remeshing;
 using nonobtuse_test::Mesh;
 using nonobtuse_test::Point;
+using nonobtuse_test::folder_entries;
+using nonobtuse_test::scratch_folder;
 using Color = std::array<unsigned char, 3>;
 
 namespace {
 
-std::string scratch_folder(const std::string& test)
-{
-  const std::string folder = ::testing::TempDir() + "nonobtuse_pictures_" + test + "_" + std::to_string(::getpid());
-  std::system(("rm -rf '" + folder + "' && mkdir -p '" + folder + "'").c_str());
-  return folder;
-}
 
-std::vector<std::string> folder_entries(const std::string& folder)
-{
-  std::vector<std::string> names;
-  if(DIR* dir = ::opendir(folder.c_str())) {
-    while(dirent* e = ::readdir(dir))
-      if(std::string(e->d_name) != "." && std::string(e->d_name) != "..") names.push_back(e->d_name);
-    ::closedir(dir);
-  }
-  return names;
-}
 
 std::string contents(const std::string& path)
 {
@@ -122,7 +108,7 @@ TEST(AnglePictures, HistogramAgreesWithTheCertificate)
 
 TEST(AnglePictures, SvgHasTheBandOneSeriesPerMeshAndTheExtremes)
 {
-  const std::string folder = scratch_folder("svg");
+  const std::string folder = scratch_folder("pictures_svg");
   const std::string path = folder + "/hist.svg";
   NR::write_angle_histogram_svg(path, sphere(), remeshed_sphere(), "sphere.off", "remeshed <MC>");
   EXPECT_EQ(folder_entries(folder).size(), 1u) << "no temporary file left";
@@ -158,7 +144,7 @@ TEST(AnglePictures, SvgHasTheBandOneSeriesPerMeshAndTheExtremes)
 
 TEST(AnglePictures, ColoredPlyRereadsBitForBitCertifiesAndHasTheColormap)
 {
-  const std::string folder = scratch_folder("ply");
+  const std::string folder = scratch_folder("pictures_ply");
   const Mesh& mesh = remeshed_sphere();
   ASSERT_TRUE(NR::certify_angle_bounds(mesh).is_certified());
   for(NR::Angle_coloring what : {NR::Angle_coloring::smallest_angle, NR::Angle_coloring::largest_angle}) {
@@ -234,7 +220,7 @@ TEST(AnglePictures, ColormapAndOutOfBoundsFaces)
   Mesh obtuse;
   obtuse.add_face(obtuse.add_vertex(Point(0, 0, 0)), obtuse.add_vertex(Point(2, 0, 0)),
                   obtuse.add_vertex(Point(1, 0.7, 0)));
-  const std::string folder = scratch_folder("obtuse");
+  const std::string folder = scratch_folder("pictures_obtuse");
   auto face_color = [&](NR::Angle_coloring what) {
     NR::write_mesh_colored_by_angle_atomically(folder + "/t.ply", obtuse, what);
     std::istringstream in(contents(folder + "/t.ply"));
@@ -252,7 +238,7 @@ TEST(AnglePictures, ColormapAndOutOfBoundsFaces)
 
 TEST(AnglePictures, FailedWritesThrowAndLeaveNothing)
 {
-  const std::string folder = scratch_folder("fail");
+  const std::string folder = scratch_folder("pictures_fail");
   const Mesh& mesh = sphere();
   ::mkdir((folder + "/a_folder.svg").c_str(), 0755);
   ::mkdir((folder + "/a_folder.ply").c_str(), 0755);

@@ -30,25 +30,10 @@ namespace {
 
 using nonobtuse_test::data;
 using nonobtuse_test::load;
+using nonobtuse_test::folder_entries;
+using nonobtuse_test::scratch_folder;
 
-// A fresh scratch folder per test.
-std::string scratch_folder(const std::string& test)
-{
-  const std::string folder = ::testing::TempDir() + "nonobtuse_" + test + "_" + std::to_string(::getpid());
-  std::system(("rm -rf '" + folder + "' && mkdir -p '" + folder + "'").c_str());
-  return folder;
-}
 
-std::set<std::string> folder_entries(const std::string& folder)
-{
-  std::set<std::string> names;
-  if(DIR* dir = ::opendir(folder.c_str())) {
-    while(dirent* e = ::readdir(dir))
-      if(std::string(e->d_name) != "." && std::string(e->d_name) != "..") names.insert(e->d_name);
-    ::closedir(dir);
-  }
-  return names;
-}
 
 void write_text(const std::string& path, const std::string& text)
 {

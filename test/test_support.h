@@ -10,7 +10,10 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <set>
 #include <string>
+#include <dirent.h>
 #include <unistd.h>
 
 namespace nonobtuse_test {
@@ -38,6 +41,26 @@ inline Mesh written_and_reread(const Mesh& mesh, const std::string& name)
   CGAL::Nonobtuse_remeshing::read_triangle_mesh(path, reread);
   std::remove(path.c_str());
   return reread;
+}
+
+// A fresh scratch folder per test.
+inline std::string scratch_folder(const std::string& test)
+{
+  const std::string folder = ::testing::TempDir() + "nonobtuse_" + test + "_" + std::to_string(::getpid());
+  std::system(("rm -rf '" + folder + "' && mkdir -p '" + folder + "'").c_str());
+  return folder;
+}
+
+// The names in `folder`, without "." and "..".
+inline std::set<std::string> folder_entries(const std::string& folder)
+{
+  std::set<std::string> names;
+  if(DIR* dir = ::opendir(folder.c_str())) {
+    while(const dirent* e = ::readdir(dir))
+      if(std::string(e->d_name) != "." && std::string(e->d_name) != "..") names.insert(e->d_name);
+    ::closedir(dir);
+  }
+  return names;
 }
 
 } // namespace nonobtuse_test

@@ -16,6 +16,12 @@
 #ifndef CGAL_NONOBTUSE_REMESHING_H
 #define CGAL_NONOBTUSE_REMESHING_H
 
+/// \defgroup PkgNonobtuseRemeshingRef Reference of the Nonobtuse_remeshing package
+/// Functions, results, visitors and parameters of namespace
+/// `CGAL::Nonobtuse_remeshing`: the pipeline `nonobtuse_remesh()`, its
+/// stages, the exact certification, the quality report, checked file IO and
+/// the pictures. The user manual is the main page.
+
 #include <CGAL/Nonobtuse_remeshing/parameters.h>
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
 #include <CGAL/Nonobtuse_remeshing/quality_report.h>

@@ -36,6 +36,7 @@ Mesh load_mesh(const std::string& path, NR::Read_log* log)
       NR::read_triangle_mesh(path, mesh, used);
     } catch(...) {
       std::cerr.rdbuf(cerr_buffer);
+      for(const std::string& repair : used.repairs) pending_notes.push_back("note: " + path + ": " + repair);
       throw;
     }
     std::cerr.rdbuf(cerr_buffer);
@@ -100,7 +101,8 @@ int run_guarded(const std::string& name, const std::function<int()>& body)
   };
   try {
     const int code = body();
-    for(const std::string& note : pending_notes) std::cerr << note << "\n";
+    if(code == success)
+      for(const std::string& note : pending_notes) std::cerr << note << "\n";
     pending_notes.clear();
     return code;
   } catch(const NR::Bad_input& e) {
@@ -125,14 +127,17 @@ bool write_certified(const std::string& path, const Mesh& mesh, std::size_t& fac
                      std::optional<NR::Angle_coloring> coloring)
 {
   faces = 0;
-  bool accepted = false;
+  bool checked = false, accepted = false;
   const auto certifying = NR::certifying_check(mesh, &faces);
-  const auto check = [&](const std::string& temporary) { return accepted = certifying(temporary); };
+  const auto check = [&](const std::string& temporary) {
+    checked = true;
+    return accepted = certifying(temporary);
+  };
   try {
     if(coloring) NR::write_mesh_colored_by_angle_atomically(path, mesh, *coloring, check);
     else NR::write_mesh_atomically(path, mesh, check);
   } catch(const NR::Output_error&) {
-    if(faces > 0 && !accepted) return false;  // the file was written, and the check refused it
+    if(checked && !accepted) return false;  // the file was written, and the check refused it
     throw;
   }
   return true;

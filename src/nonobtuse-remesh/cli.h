@@ -51,8 +51,8 @@ bool parse_options(const std::string& name, const std::string& synopsis,
                    const po::positional_options_description& positional,
                    int argc, char** argv, po::variables_map& vm, int& exit_code);
 
-// Runs `body`, mapping exceptions to one-line messages and exit codes; then
-// prints the notes of load_mesh().
+// Runs `body`, mapping exceptions to one-line messages and exit codes; then,
+// if it succeeded, prints the notes of load_mesh().
 int run_guarded(const std::string& name, const std::function<int()>& body);
 
 // Writes `mesh` to `path` atomically; the temporary file is re-read and
@@ -65,10 +65,12 @@ bool write_certified(const std::string& path, const Mesh& mesh, std::size_t& fac
 
 // A progress line on standard error, at the first call and then at most once
 // a second (or at once when forced): rewritten in place on a terminal, a new
-// line otherwise; nothing when quiet.
+// line otherwise; nothing when quiet. Ended when it goes, so that an error
+// message starts on a line of its own.
 struct Progress_line
 {
   bool quiet = false;
+  ~Progress_line() { done(); }
   void show(const std::string& text, bool force = false);
   void done();
   // "[#########-----------]  45%" for a fraction in [0, 1]

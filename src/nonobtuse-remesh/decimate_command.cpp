@@ -20,7 +20,6 @@ namespace NR = CGAL::Nonobtuse_remeshing;
 
 namespace {
 
-// The decimation's progress line.
 // The decimation's progress line, with a bar towards the last target.
 struct Decimation_progress
 {

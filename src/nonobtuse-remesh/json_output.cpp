@@ -2,7 +2,6 @@
 
 #include <CGAL/Nonobtuse_remeshing/mesh_io.h>
 
-#include <fstream>
 
 namespace nonobtuse_cli {
 
@@ -66,13 +65,7 @@ json report_to_json(const std::string& path, const NR::Quality_report& r,
 
 void write_json_atomically(const std::string& path, const json& j)
 {
-  const std::string text = j.dump(2) + "\n";
-  NR::write_file_atomically(path, [&](const std::string& temporary) {
-    std::ofstream out(temporary);
-    out << text;
-    out.close();
-    return bool(out);
-  });
+  NR::write_text_atomically(path, j.dump(2) + "\n");
 }
 
 } // namespace nonobtuse_cli

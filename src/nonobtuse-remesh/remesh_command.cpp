@@ -1,28 +1,24 @@
-// nonobtuse-remesh remesh INPUT -o OUTPUT [--resolution N] [--stop-after init|valence|fit]
-//                  [--signs patches|inside-test] [fit options] [--lod R,R...] [--json FILE]
+// nonobtuse-remesh remesh INPUT -o OUTPUT [--resolution N | --target-vertices V]
+//                  [--stop-after init|valence|fit] [--signs patches|inside-test] [stage options]
+//                  [--lod R,R...] [--report FILE.json] [--angle-histogram FILE.svg]
+//                  [--color-by-angle smallest|largest]
 
 #include "cli.h"
 #include "decimation_cli.h"
 #include "json_output.h"
 
 #include <CGAL/Nonobtuse_remeshing/angle_pictures.h>
-#include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
-#include <CGAL/Nonobtuse_remeshing/deform_to_fit.h>
 #include <CGAL/Nonobtuse_remeshing/mesh_io.h>
 #include <CGAL/Nonobtuse_remeshing/nonobtuse_remesh.h>
-#include <CGAL/Nonobtuse_remeshing/nonobtuse_marching_cubes.h>
 #include <CGAL/Nonobtuse_remeshing/quality_report.h>
-#include <CGAL/Nonobtuse_remeshing/remove_bad_valence_vertices.h>
 
 #include <chrono>
-#include <fstream>
 #include <functional>
 #include <iomanip>
 #include <iostream>
 #include <optional>
 #include <sstream>
 
-#include <unistd.h>
 
 namespace nonobtuse_cli {
 
@@ -306,6 +302,7 @@ int remesh_command(int argc, char** argv)
     ("report", po::value<std::string>(&report_path),
      "also write a JSON report: certification, quality against the input, the statistics of every stage "
      "(the thesis's Tables 4.1, 7.1, 7.2) and timings")
+    ("json", po::value<std::string>(&report_path), "the same as --report (the name the other commands use)")
     ("angle-histogram", po::value<std::string>(&histogram_path),
      "also write an SVG picture of the angle distributions of input and output, the [30, 90] band marked")
     ("color-by-angle", po::value<std::string>(&coloring_name),

@@ -104,20 +104,6 @@ inline std::string xml_escaped(const std::string& text)
   return out;
 }
 
-// Writes `contents` to `path` atomically; `check` as in `write_file_atomically()`.
-inline void write_text_atomically(const std::string& path, const std::string& contents,
-                                  const std::function<bool(const std::string&)>& check = nullptr)
-{
-  write_file_atomically(
-      path,
-      [&](const std::string& temporary) {
-        std::ofstream out(temporary, std::ios::binary);
-        out << contents;
-        out.close();
-        return bool(out);
-      },
-      check);
-}
 
 } // namespace internal
 
@@ -217,7 +203,7 @@ inline void write_angle_histogram_svg(const std::string& path, const std::vector
     svg << "<text x=\"" << x_of(90) << "\" y=\"" << base + 35 << "\" text-anchor=\"middle\">angle (degrees)</text>\n</g>\n";
   }
   svg << "</svg>\n";
-  internal::write_text_atomically(path, svg.str());
+  write_text_atomically(path, svg.str());
 }
 
 /// \ingroup PkgNonobtuseRemeshingRef
@@ -296,7 +282,7 @@ void write_mesh_colored_by_angle_atomically(const std::string& path, const Trian
       << "\nproperty double x\nproperty double y\nproperty double z\nelement face " << num_faces(mesh)
       << "\nproperty list uchar int vertex_indices\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
       << "end_header\n" << vertices_out.str() << faces_out.str();
-  internal::write_text_atomically(path, ply.str(), check);
+  write_text_atomically(path, ply.str(), check);
 }
 
 } // namespace Nonobtuse_remeshing

@@ -308,6 +308,22 @@ inline void write_file_atomically(const std::string& path,
 }
 
 /// \ingroup PkgNonobtuseRemeshingRef
+/// Writes the text `contents` to `path` atomically, as `write_file_atomically()`.
+inline void write_text_atomically(const std::string& path, const std::string& contents,
+                                  const std::function<bool(const std::string&)>& check = nullptr)
+{
+  write_file_atomically(
+      path,
+      [&](const std::string& temporary) {
+        std::ofstream out(temporary, std::ios::binary);
+        out << contents;
+        out.close();
+        return bool(out);
+      },
+      check);
+}
+
+/// \ingroup PkgNonobtuseRemeshingRef
 /// Writes the triangle mesh `mesh` to `path` (format by extension: OFF, OBJ,
 /// ASCII STL with max_digits10 digits, or binary PLY with doubles), atomically
 /// as `write_file_atomically()`. `check`, if given, sees the temporary file
@@ -343,7 +359,11 @@ std::function<bool(const std::string&)> certifying_check(const TriangleMesh& mes
 {
   return [&mesh, faces](const std::string& temporary) {
     TriangleMesh reread;
-    read_triangle_mesh(temporary, reread);
+    try {
+      read_triangle_mesh(temporary, reread);
+    } catch(const Bad_input&) {  // e.g. a mesh without faces: it does not certify
+      return false;
+    }
     const Angle_certificate certificate = certify_angle_bounds(reread);
     if(faces) *faces = certificate.faces;
     return certificate.is_certified() && certificate.faces == num_faces(mesh);

@@ -43,16 +43,17 @@ enum class Remeshing_stage
 struct Remeshing_progress
 {
   Remeshing_stage stage = Remeshing_stage::initial_mesh;
-  double fraction = -1.;  ///< of the stage done, in [0, 1]; -1 when it cannot be known (the fit)
+  double fraction = -1.;  ///< of the stage done: 0 as it starts; -1 when it cannot be known (during the fit)
   const Deform_to_fit_statistics* fit = nullptr;  ///< during the fit, its statistics so far
 };
 
 /// \ingroup PkgNonobtuseRemeshingRef
 /// Default visitor of `nonobtuse_remesh()`: never cancels. A visitor has
 /// the three members below. `keep_going()` is called as each stage starts
-/// and ends and, during the fit, before every move; returning false stops
-/// the pipeline there, with the output certified (or empty, when the
-/// initial mesh was not built yet).
+/// (fraction 0) and, during the fit, before every move; returning false
+/// stops the pipeline there, with the output certified (or empty, when the
+/// initial mesh was not built yet). `stage_finished()` follows every stage
+/// that ran, also one that was cancelled.
 struct Default_remeshing_visitor
 {
   void stage_started(Remeshing_stage) {}
@@ -114,16 +115,21 @@ void collect_garbage_of(Mesh&, long) {}
 } // namespace internal
 
 /// \ingroup PkgNonobtuseRemeshingRef
-/// The resolution (cubes along the longest side of the bounding box) whose
-/// initial mesh of `input` should have about `target_vertices` vertices:
-/// N = L sqrt(V / (c A)), with L the longest side, A the area and c = 1.8
+/// The resolution (cubes along the longest side of the bounding box of the
+/// faces) whose initial mesh of `input` should have about `target_vertices`
+/// vertices: N = L sqrt(V / (c A)), with L the longest side, A the area and c = 1.8
 /// the vertex density measured on curved surfaces (see the manual). Clamped
 /// to [1, 1024]. Throws std::invalid_argument for an input without area.
 template <typename TriangleMesh>
 int resolution_for_target_vertices(const TriangleMesh& input, std::size_t target_vertices)
 {
-  const Bbox_3 box = Polygon_mesh_processing::bbox(input);
+  Bbox_3 box;  // of the faces, as the grid's
+  const auto vpm = get(CGAL::vertex_point, input);
+  for(auto f : faces(input))
+    for(auto v : vertices_around_face(halfedge(f, input), input)) box += get(vpm, v).bbox();
   const double longest = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
+  if(longest < 1e-30 || longest > 1e30)  // as the grid refuses it
+    throw std::invalid_argument("the input's size is outside the supported range [1e-30, 1e30]: scale it");
   const double area = Polygon_mesh_processing::area(input);
   if(!(area > 0.) || !(longest > 0.) || !std::isfinite(area))
     throw std::invalid_argument("the input has no area to choose a resolution from");
@@ -148,10 +154,10 @@ int resolution_for_target_vertices(const TriangleMesh& input, std::size_t target
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{resolution} cubes along the longest side of the bounding box, in [1, 1024];
 ///     default 100 \cgalParamNEnd
-///   \cgalParamNBegin{target_vertices} instead of `resolution`: about this many output vertices.
-///     The resolution comes from `resolution_for_target_vertices()`; if the initial mesh misses the
-///     target by more than 10%, it is rebuilt once at the resolution scaled by the square root of
-///     the ratio \cgalParamNEnd
+///   \cgalParamNBegin{target_vertices} about this many output vertices; when given and not 0, it
+///     replaces `resolution`. The resolution comes from `resolution_for_target_vertices()`; if the
+///     initial mesh misses the target by more than 10%, it is rebuilt once at the resolution scaled
+///     by the square root of the ratio (and the first one kept if that fails) \cgalParamNEnd
 ///   \cgalParamNBegin{sign_source} corner signs of the Marching Cubes; default `Sign_source::patches` \cgalParamNEnd
 ///   \cgalParamNBegin{valence_cleanup} run the removal of bad-valence vertices; default true \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_split} see `remove_bad_valence_vertices()`; default true \cgalParamNEnd
@@ -161,13 +167,14 @@ int resolution_for_target_vertices(const TriangleMesh& input, std::size_t target
 ///     attract_features} see `deform_to_fit()` (the drum subdivisions serve the valence stage
 ///     too) \cgalParamNEnd
 ///   \cgalParamNBegin{remeshing_visitor} progress and cancellation, see `Default_remeshing_visitor`
-///     (pass `std::ref(visitor)` to keep its state) \cgalParamNEnd
+///     (pass `std::ref(visitor)` to keep its state); it sees the fit's progress, so a `fit_visitor`
+///     among the parameters is not used \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// Throws std::invalid_argument if a parameter is out of range, if `input`
 /// is not a non-empty triangle mesh with some size, or if its initial mesh
 /// is empty (an input too small or too thin for the resolution); `output`
-/// is then empty.
+/// is then empty, as after any exception.
 template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Nonobtuse_remeshing_statistics nonobtuse_remesh(const TriangleMesh& input, TriangleMesh& output,
                                                 const NamedParameters& np = CGAL::parameters::default_values())
@@ -189,7 +196,6 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh(const TriangleMesh& input, Trian
   const int k = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), 2);
   if(last == Remeshing_stage::valence && !valence_cleanup)
     throw std::invalid_argument("stopping after the valence stage contradicts skipping it");
-  if(k < 1 || k > 16) throw std::invalid_argument("the drum subdivisions k must lie in [1, 16]");
   int rings = 0;
   internal::deform_to_fit_options(np, rings);  // the fit's parameters are checked before any work
   stats.target_vertices = choose_parameter(get_parameter(np, internal_np::target_vertices), std::size_t(0));
@@ -231,66 +237,78 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh(const TriangleMesh& input, Trian
     }
   }
 
-  // Chapter 4: the initial mesh, certified in [35.26, 90] by construction.
-  if(!proceed(Remeshing_stage::initial_mesh, 0.)) return finish();
-  visitor.stage_started(Remeshing_stage::initial_mesh);
-  auto stage_start = Clock::now();
-  const auto build = [&]() {
-    try {
-      stats.initial_mesh = nonobtuse_marching_cubes(
-          *surface, output, parameters::combine(parameters::resolution(stats.resolution), parameters::sign_source(signs)));
-    } catch(...) {  // a refused input leaves no partial mesh behind
-      clear(output);
-      throw;
-    }
-  };
-  build();
-  if(stats.target_vertices > 0) {
-    const double ratio = double(stats.target_vertices) / double((std::max)(std::size_t(1), vertices(output).size()));
-    if(ratio < 1. / 1.1 || ratio > 1.1) {
+  try {  // whatever throws, no partial mesh is left behind
+    // Chapter 4: the initial mesh, certified in [35.26, 90] by construction.
+    if(!proceed(Remeshing_stage::initial_mesh, 0.)) return finish();
+    visitor.stage_started(Remeshing_stage::initial_mesh);
+    auto stage_start = Clock::now();
+    const auto build = [&](int resolution, TriangleMesh& mesh) {
+      return nonobtuse_marching_cubes(
+          *surface, mesh, parameters::combine(parameters::resolution(resolution), parameters::sign_source(signs)));
+    };
+    stats.initial_mesh = build(stats.resolution, output);
+    if(stats.target_vertices > 0) {
+      // off by more than 10%: once more at the resolution scaled by the
+      // square root of the miss, kept if it builds a mesh
+      const double ratio = double(stats.target_vertices) / double((std::max)(std::size_t(1), vertices(output).size()));
       const int redone =
           int(std::lround((std::min)(1024., (std::max)(1., double(stats.resolution) * std::sqrt(ratio)))));
-      if(redone != stats.resolution) {
-        stats.trial_resolution = stats.resolution;
-        stats.resolution = redone;
-        build();
+      if((ratio < 1. / 1.1 || ratio > 1.1) && redone != stats.resolution) {
+        TriangleMesh second;
+        Marching_cubes_result r;
+        bool built = true;
+        try {
+          r = build(redone, second);
+        } catch(const std::invalid_argument&) {
+          built = false;
+        }
+        if(built && num_faces(second) > 0) {
+          r.seconds += stats.initial_mesh.seconds;
+          stats.initial_mesh = std::move(r);
+          stats.trial_resolution = stats.resolution;
+          stats.resolution = redone;
+          output = std::move(second);
+        }
       }
     }
-  }
-  stats.initial_mesh.patch_faces.clear();
-  stats.initial_mesh.face_patch.clear();
-  if(num_faces(output) == 0)
-    throw std::invalid_argument("the initial mesh is empty: the input is too small or too thin for resolution " +
-                                std::to_string(stats.resolution));
-  visitor.stage_finished(Remeshing_stage::initial_mesh, seconds_since(stage_start));
-  if(!proceed(Remeshing_stage::initial_mesh, 1.) || last == Remeshing_stage::initial_mesh) return finish();
+    stats.initial_mesh.patch_faces.clear();
+    stats.initial_mesh.face_patch.clear();
+    if(num_faces(output) == 0)
+      throw std::invalid_argument("the initial mesh is empty: the input is too small or too thin for resolution " +
+                                  std::to_string(stats.resolution));
+    visitor.stage_finished(Remeshing_stage::initial_mesh, seconds_since(stage_start));
+    if(last == Remeshing_stage::initial_mesh) return finish();
 
-  // Section 5.7: bad valences out.
-  if(valence_cleanup) {
-    if(!proceed(Remeshing_stage::valence, 0.)) return finish();
-    visitor.stage_started(Remeshing_stage::valence);
+    // Section 5.7: bad valences out.
+    if(valence_cleanup) {
+      if(!proceed(Remeshing_stage::valence, 0.)) return finish();
+      visitor.stage_started(Remeshing_stage::valence);
+      stage_start = Clock::now();
+      stats.valence = remove_bad_valence_vertices(
+          output, parameters::combine(
+                      parameters::vertex_split(choose_parameter(get_parameter(np, internal_np::vertex_split), true)),
+                      parameters::drum_subdivisions(k)));
+      stats.valence_run = true;
+      internal::collect_garbage_of(output, 0);
+      visitor.stage_finished(Remeshing_stage::valence, seconds_since(stage_start));
+      if(last == Remeshing_stage::valence) return finish();
+    }
+
+    // Chapter 5: deform-to-fit, with the caller's fit parameters (the relay
+    // takes the place of a fit_visitor among them).
+    if(!proceed(Remeshing_stage::fit, 0.)) return finish();
+    visitor.stage_started(Remeshing_stage::fit);
     stage_start = Clock::now();
-    stats.valence = remove_bad_valence_vertices(
-        output, parameters::combine(
-                    parameters::vertex_split(choose_parameter(get_parameter(np, internal_np::vertex_split), true)),
-                    parameters::drum_subdivisions(k)));
-    stats.valence_run = true;
-    internal::collect_garbage_of(output, 0);
-    visitor.stage_finished(Remeshing_stage::valence, seconds_since(stage_start));
-    if(!proceed(Remeshing_stage::valence, 1.) || last == Remeshing_stage::valence) return finish();
+    internal::Fit_progress_relay<std::remove_reference_t<decltype(visitor)> > relay{&visitor};
+    stats.fit = deform_to_fit(output, *surface, parameters::combine(np, parameters::fit_visitor(std::ref(relay))));
+    stats.fit_run = true;
+    if(stats.fit.cancelled) stats.cancelled = true;
+    visitor.stage_finished(Remeshing_stage::fit, seconds_since(stage_start));
+    return finish();
+  } catch(...) {
+    clear(output);
+    throw;
   }
-
-  // Chapter 5: deform-to-fit, with the caller's fit parameters.
-  if(!proceed(Remeshing_stage::fit, 0.)) return finish();
-  visitor.stage_started(Remeshing_stage::fit);
-  stage_start = Clock::now();
-  internal::Fit_progress_relay<std::remove_reference_t<decltype(visitor)> > relay{&visitor};
-  stats.fit = deform_to_fit(output, *surface, parameters::combine(np, parameters::fit_visitor(std::ref(relay))));
-  stats.fit_run = true;
-  if(stats.fit.cancelled) stats.cancelled = true;
-  visitor.stage_finished(Remeshing_stage::fit, seconds_since(stage_start));
-  if(!stats.cancelled) proceed(Remeshing_stage::fit, 1.);
-  return finish();
 }
 
 } // namespace Nonobtuse_remeshing

@@ -42,7 +42,7 @@ namespace internal_np {
   X(attract_features_t, attract_features) /* input tips and creases hold */     \
   X(fit_visitor_t, fit_visitor)           /* progress and cancellation */      \
   X(vertex_split_t, vertex_split)         /* splits after removal */        \
-  X(target_vertices_t, target_vertices)   /* decimation: vertices to keep */ \
+  X(target_vertices_t, target_vertices)   /* vertices of the result */       \
   X(vertex_ratio_t, vertex_ratio)         /* decimation: fraction to keep */ \
   X(max_error_t, max_error)               /* decimation: fraction of diag */ \
   X(min_interior_valence_t,                                                     \
