@@ -160,3 +160,25 @@ TEST(NonobtuseRemesh, Refusals)
   EXPECT_THROW(NR::nonobtuse_remesh(input, output, NR::parameters::resolution(1)), std::invalid_argument);
   EXPECT_EQ(num_faces(output), 0u);
 }
+
+// A Surface_mesh with garbage (a decimation without collect_garbage()):
+// the report, the certifying write and the coloured PLY count live elements.
+TEST(NonobtuseRemesh, GarbageIsNotCounted)
+{
+  Mesh mesh;
+  NR::nonobtuse_remesh(nonobtuse_test::load("sphere.off"), mesh,
+                       NR::parameters::combine(NR::parameters::resolution(20),
+                                               NR::parameters::stop_after(NR::Remeshing_stage::initial_mesh)));
+  NR::angle_bounded_decimation(mesh, NR::parameters::vertex_ratio(0.8));
+  ASSERT_TRUE(mesh.has_garbage());
+  const NR::Quality_report r = NR::quality_report(mesh);
+  EXPECT_EQ(r.vertices, vertices(mesh).size());
+  EXPECT_EQ(r.euler_characteristic, 2);
+  const std::string folder = nonobtuse_test::scratch_folder("garbage");
+  EXPECT_NO_THROW(NR::write_mesh_atomically(folder + "/m.off", mesh, NR::certifying_check(mesh)));
+  EXPECT_NO_THROW(NR::write_mesh_colored_by_angle_atomically(folder + "/m.ply", mesh, NR::Angle_coloring::largest_angle,
+                                                             NR::certifying_check(mesh)));
+  Mesh reread;
+  NR::read_triangle_mesh(folder + "/m.ply", reread);
+  EXPECT_EQ(vertices(reread).size(), vertices(mesh).size());
+}

@@ -278,8 +278,8 @@ void write_mesh_colored_by_angle_atomically(const std::string& path, const Trian
   std::ostringstream ply;
   ply << "ply\nformat ascii 1.0\ncomment face colour by " << (smallest ? "smallest angle: blue 60, green 45, red 30"
                                                                        : "largest angle: blue 60, green 75, red 90")
-      << " degrees, magenta out of [30, 90] or degenerate\nelement vertex " << num_vertices(mesh)
-      << "\nproperty double x\nproperty double y\nproperty double z\nelement face " << num_faces(mesh)
+      << " degrees, magenta out of [30, 90] or degenerate\nelement vertex " << vertices(mesh).size()
+      << "\nproperty double x\nproperty double y\nproperty double z\nelement face " << faces(mesh).size()
       << "\nproperty list uchar int vertex_indices\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
       << "end_header\n" << vertices_out.str() << faces_out.str();
   write_text_atomically(path, ply.str(), check);

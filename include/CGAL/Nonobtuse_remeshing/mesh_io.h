@@ -350,14 +350,14 @@ void write_mesh_atomically(const std::string& path, const PolygonMesh& mesh,
 /// A `check` for `write_mesh_atomically()` that makes the guarantee hold on
 /// the file itself: it re-reads the temporary file and accepts it only if it
 /// certifies exactly in [30, 90] degrees with as many faces as `mesh`. If
-/// `faces` is given, it receives the faces of the file. `mesh` must outlive
+/// `file_faces` is given, it receives the faces of the file. `mesh` must outlive
 /// the check.
 ///
 ///   write_mesh_atomically("out.off", mesh, certifying_check(mesh));  // throws Output_error if refused
 template <typename TriangleMesh>
-std::function<bool(const std::string&)> certifying_check(const TriangleMesh& mesh, std::size_t* faces = nullptr)
+std::function<bool(const std::string&)> certifying_check(const TriangleMesh& mesh, std::size_t* file_faces = nullptr)
 {
-  return [&mesh, faces](const std::string& temporary) {
+  return [&mesh, file_faces](const std::string& temporary) {
     TriangleMesh reread;
     try {
       read_triangle_mesh(temporary, reread);
@@ -365,8 +365,8 @@ std::function<bool(const std::string&)> certifying_check(const TriangleMesh& mes
       return false;
     }
     const Angle_certificate certificate = certify_angle_bounds(reread);
-    if(faces) *faces = certificate.faces;
-    return certificate.is_certified() && certificate.faces == num_faces(mesh);
+    if(file_faces) *file_faces = certificate.faces;
+    return certificate.is_certified() && certificate.faces == faces(mesh).size();
   };
 }
 

@@ -200,9 +200,9 @@ Quality_report quality_report(const TriangleMesh& mesh,
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
 
   Quality_report r;
-  r.vertices = num_vertices(mesh);
-  r.edges = num_edges(mesh);
-  r.faces = num_faces(mesh);
+  r.vertices = vertices(mesh).size();  // live elements: num_*() of a Surface_mesh count removed ones
+  r.edges = edges(mesh).size();
+  r.faces = faces(mesh).size();
   r.euler_characteristic = long(r.vertices) - long(r.edges) + long(r.faces);
 
   const auto certificate = certify_angle_bounds(mesh, np);
