@@ -231,7 +231,8 @@ TEST(MarchingCubes, MeshCubeIntersectionMatchesBruteForce)
       const NR::internal::Grid grid = grid_of(mesh, resolution);
       const NR::internal::Input_triangles in = NR::internal::input_triangles(mesh);
       const std::vector<bool> usable(in.triangles.size(), true);
-      const NR::internal::Cube_triangles cubes = NR::internal::mesh_cube_intersection(grid, in.triangles, usable);
+      NR::internal::Cube_triangles cubes;
+      ASSERT_TRUE(NR::internal::mesh_cube_intersection(grid, in.triangles, usable, std::size_t(-1), cubes));
       std::set<std::pair<std::int64_t, std::size_t> > fast, brute;
       for(std::size_t c = 0; c < cubes.size(); ++c)
         for(std::size_t i = cubes.first[c]; i < cubes.first[c + 1]; ++i) fast.insert({cubes.cube_ids[c], cubes.triangles[i]});

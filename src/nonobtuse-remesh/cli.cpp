@@ -5,8 +5,13 @@
 #include <CGAL/Nonobtuse_remeshing/mesh_io.h>
 
 #include <algorithm>
+#include <csignal>
 #include <iostream>
 #include <sstream>
+#include <utility>
+
+#include <climits>
+#include <cstdlib>
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -45,27 +50,81 @@ Mesh load_mesh(const std::string& path, NR::Read_log* log)
   return mesh;
 }
 
-void check_output_path(const std::string& path, const std::vector<std::string>& inputs)
+namespace {
+
+// What a path names: the canonical folder and the file name, and the file's
+// device and inode where it exists.
+struct File_identity
 {
+  std::string canonical;
+  bool exists = false;
+  dev_t device = 0;
+  ino_t inode = 0;
+
+  bool same_file(const File_identity& other) const
+  {
+    return (!canonical.empty() && canonical == other.canonical) ||
+           (exists && other.exists && device == other.device && inode == other.inode);
+  }
+};
+
+File_identity identify(const std::string& path)
+{
+  File_identity id;
   const std::size_t slash = path.find_last_of('/');
-  const std::string folder = (slash == std::string::npos) ? "." : path.substr(0, slash + 1);
-  if(path.empty() || slash + 1 == path.size())
-    throw NR::Output_error("cannot write '" + path + "': not a file name");
-  if(::access(folder.c_str(), W_OK) != 0)
-    throw NR::Output_error("cannot write '" + path + "': folder '" + folder +
-                           "' does not exist or is not writable");
-  for(const std::string& input : inputs)
-    if(!input.empty() && input == path)
-      throw NR::Output_error("refusing to write '" + path + "' over the input '" + input + "'");
-  struct stat target;
-  if(::stat(path.c_str(), &target) != 0)
-    return;  // a new file
-  if(S_ISDIR(target.st_mode))
-    throw NR::Output_error("cannot write '" + path + "': it is a folder");
-  for(const std::string& input : inputs) {
-    struct stat source;
-    if(::stat(input.c_str(), &source) == 0 && source.st_dev == target.st_dev && source.st_ino == target.st_ino)
-      throw NR::Output_error("refusing to write '" + path + "' over the input '" + input + "'");
+  const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+  const std::string name = path.substr(slash == std::string::npos ? 0 : slash + 1);
+  if(char* real = ::realpath(folder.c_str(), nullptr)) {
+    id.canonical = std::string(real) + "/" + name;
+    std::free(real);
+  }
+  struct stat status;
+  if(::stat(path.c_str(), &status) == 0) {
+    id.exists = true;
+    id.device = status.st_dev;
+    id.inode = status.st_ino;
+  }
+  return id;
+}
+
+} // namespace
+
+void check_paths(const std::vector<Named_path>& inputs, const std::vector<Named_path>& outputs)
+{
+  std::vector<std::pair<const Named_path*, File_identity> > seen;
+  for(const Named_path& input : inputs)
+    if(!input.path.empty()) seen.emplace_back(&input, identify(input.path));
+  const std::size_t input_count = seen.size();
+  for(const Named_path& output : outputs) {
+    const std::string& path = output.path;
+    if(path.empty()) continue;
+    const std::size_t slash = path.find_last_of('/');
+    const std::string folder = (slash == std::string::npos) ? "." : path.substr(0, slash + 1);
+    const std::string name = path.substr(slash == std::string::npos ? 0 : slash + 1);
+    if(name.empty() || name == "." || name == "..")
+      throw NR::Output_error("cannot write '" + path + "' (" + output.option + "): not a file name");
+    if(::access(folder.c_str(), W_OK) != 0)
+      throw NR::Output_error("cannot write '" + path + "' (" + output.option + "): folder '" + folder +
+                             "' does not exist or is not writable");
+    const long name_max = ::pathconf(folder.c_str(), _PC_NAME_MAX);
+    if(name.size() > std::size_t(name_max > 0 ? name_max : 255))
+      throw NR::Output_error("cannot write '" + path + "' (" + output.option + "): its file name has " +
+                             std::to_string(name.size()) + " bytes, more than the folder allows (" +
+                             std::to_string(name_max > 0 ? name_max : 255) + ")");
+    struct stat target;
+    if(::stat(path.c_str(), &target) == 0 && S_ISDIR(target.st_mode))
+      throw NR::Output_error("cannot write '" + path + "' (" + output.option + "): it is a folder");
+    const File_identity id = identify(path);
+    for(std::size_t i = 0; i < seen.size(); ++i) {
+      if(!id.same_file(seen[i].second)) continue;
+      const Named_path& other = *seen[i].first;
+      if(i < input_count)
+        throw NR::Output_error("refusing to write '" + path + "' (" + output.option + ") over the input '" +
+                               other.path + "'");
+      throw NR::Output_error(other.option + " '" + other.path + "' and " + output.option + " '" + path +
+                             "' name the same file: give each output its own path");
+    }
+    seen.emplace_back(&output, id);
   }
 }
 
@@ -141,6 +200,22 @@ bool write_certified(const std::string& path, const Mesh& mesh, std::size_t& fac
     throw;
   }
   return true;
+}
+
+namespace {
+
+extern "C" void remove_temporaries_and_die(int signal_number)
+{
+  NR::remove_temporary_files();
+  std::signal(signal_number, SIG_DFL);
+  std::raise(signal_number);
+}
+
+} // namespace
+
+void install_signal_cleanup()
+{
+  for(int signal_number : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal_number, remove_temporaries_and_die);
 }
 
 void Progress_line::show(const std::string& text, bool force)

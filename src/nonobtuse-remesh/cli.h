@@ -39,10 +39,20 @@ enum Exit_code : int {
 // there too.
 Mesh load_mesh(const std::string& path, CGAL::Nonobtuse_remeshing::Read_log* log = nullptr);
 
-// Throws CGAL::Nonobtuse_remeshing::Output_error unless a file can be created
-// at `path` (its folder exists and is writable, it is not a folder, and it is
-// none of the `inputs`), before any work is done.
-void check_output_path(const std::string& path, const std::vector<std::string>& inputs);
+// A path given on the command line, with the option that gave it.
+struct Named_path
+{
+  std::string option;  // "-o", "--report", "level 1", "INPUT", ...
+  std::string path;    // empty: not given
+};
+
+// Before any work: throws CGAL::Nonobtuse_remeshing::Output_error unless a
+// file can be created at each output path (its folder exists and is
+// writable, its name fits, it is not a folder) and no two paths, inputs and
+// outputs alike, name the same file: paths are compared by what they name
+// (canonical folder and file name, and device and inode where the file
+// exists), not as text. The message names the two options that clash.
+void check_paths(const std::vector<Named_path>& inputs, const std::vector<Named_path>& outputs);
 
 // Parses the command line of subcommand `name`; returns false and sets
 // `exit_code` when the run should stop there (help shown, or usage error).
@@ -81,6 +91,10 @@ private:
   bool shown_ = false;
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
+
+// Makes SIGINT, SIGTERM and SIGHUP remove the temporary files of the writes
+// in progress before the program ends as the signal says.
+void install_signal_cleanup();
 
 int certify_command(int argc, char** argv);
 int decimate_command(int argc, char** argv);

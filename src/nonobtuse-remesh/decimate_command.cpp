@@ -221,12 +221,17 @@ int decimate_command(int argc, char** argv)
     if(settings.drum_subdivisions < 1 || settings.drum_subdivisions > 16)
       throw std::invalid_argument("--drum-subdivisions must lie in [1, 16]");
     settings.check(vm);
-    check_output_path(output_path, {input_path});
+    check_paths({{"INPUT", input_path}}, {{"-o", output_path}, {"--json", json_path}});
     if(!NR::internal::is_mesh_extension(NR::internal::file_extension(output_path)))
       throw NR::Output_error("cannot write '" + output_path + "': unsupported extension (expected .off, .obj, .ply or .stl)");
-    if(!json_path.empty()) check_output_path(json_path, {input_path, output_path});
 
-    const Mesh input = load_mesh(input_path);
+    NR::Read_log log;
+    const Mesh input = load_mesh(input_path, &log);
+    if(!log.faces_as_written()) {
+      std::cerr << "nonobtuse-remesh decimate: '" << input_path << "' is not certified as written: it has "
+                << log.faces_changed() << "; decimate needs a nonobtuse triangle mesh, such as the output of remesh\n";
+      return int(certification_failed);
+    }
     const auto certificate = NR::certify_angle_bounds(input);
     if(!certificate.is_certified()) {
       std::cerr << "nonobtuse-remesh decimate: '" << input_path << "' does not certify in [30, 90] degrees ("

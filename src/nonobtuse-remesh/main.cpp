@@ -52,6 +52,7 @@ int main(int argc, char** argv)
     print_help(std::cout);
     return nonobtuse_cli::success;
   }
+  nonobtuse_cli::install_signal_cleanup();
   for(const Command& c : commands)
     if(name == c.name)
       return c.run(argc - 1, argv + 1);

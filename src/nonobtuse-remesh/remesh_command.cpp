@@ -260,7 +260,7 @@ int remesh_command(int argc, char** argv)
   Decimation_settings decimation;
   int resolution = 100, drum_subdivisions = 2, quadric_rings = 0, smoothing_steps = 2;
   long long target_vertices = 0;
-  double alpha = 0.5, fit_tolerance = 1e-4, max_seconds = 0.;
+  double alpha = 0.5, fit_tolerance = 1e-4, max_seconds = 0., memory_limit = 4.;
   long long max_moves = 0;
   bool quiet = false;
   po::options_description options("options");
@@ -295,6 +295,9 @@ int remesh_command(int argc, char** argv)
     ("no-early-smoothing", "fit: complete each optimization phase before smoothing")
     ("no-tangential-smoothing", "fit: smoothing term in every direction, as in the thesis")
     ("no-feature-attraction", "fit: no attraction of the input's vertices and sharp edges")
+    ("memory-limit", po::value<double>(&memory_limit)->default_value(4.),
+     "GiB the run may use, estimated before the initial mesh is built (about 2 KiB per patch of input "
+     "triangles in a grid cube); a larger run is refused at once")
     ("quiet,q", po::bool_switch(&quiet), "no progress lines")
     ("lod", po::value<std::string>(&lod),
      "levels of detail: decreasing fractions of the vertices to keep, like 0.5,0.1; level i is written "
@@ -343,17 +346,15 @@ int remesh_command(int argc, char** argv)
     if(vm.count("max-moves") && max_moves < 0) throw std::invalid_argument("--max-moves must be at least 0");
     if(signs != "patches" && signs != "inside-test")
       throw std::invalid_argument("--signs must be patches or inside-test (got '" + signs + "')");
+    if(!(memory_limit > 0. && memory_limit <= 1e6)) throw std::invalid_argument("--memory-limit must lie in (0, 1e6] GiB");
     if(resolution < 1 || resolution > 1024)
       throw std::invalid_argument("--resolution must be between 1 and 1024");
     if(vm.count("target-vertices") && !vm["resolution"].defaulted())
       throw std::invalid_argument("give one of --resolution and --target-vertices");
     if(vm.count("target-vertices") && (target_vertices < 4 || target_vertices > 100000000))
       throw std::invalid_argument("--target-vertices must lie in [4, 100000000]");
-    check_output_path(output_path, {input_path});
-    if(!NR::internal::is_mesh_extension(NR::internal::file_extension(output_path)))
-      throw NR::Output_error("cannot write '" + output_path + "': unsupported extension (expected .off, .obj, .ply or .stl)");
-    if(!report_path.empty()) check_output_path(report_path, {input_path, output_path});
-    if(!histogram_path.empty()) check_output_path(histogram_path, {input_path, output_path, report_path});
+    if(vm.count("report") && vm.count("json"))
+      throw std::invalid_argument("--report and --json are one option under two names: give one");
     std::optional<NR::Angle_coloring> coloring;
     if(vm.count("color-by-angle")) {
       if(coloring_name != "smallest" && coloring_name != "largest")
@@ -367,8 +368,14 @@ int remesh_command(int argc, char** argv)
     decimation.drum_subdivisions = drum_subdivisions;
     const std::vector<double> ratios = lod.empty() ? std::vector<double>() : parse_ratios(lod);
     if(!ratios.empty() && stop_after != "fit") throw std::invalid_argument("--lod needs the whole pipeline (no --stop-after)");
+    std::vector<Named_path> outputs{{"-o", output_path},
+                                    {vm.count("json") ? "--json" : "--report", report_path},
+                                    {"--angle-histogram", histogram_path}};
     for(std::size_t i = 1; i <= ratios.size(); ++i)
-      check_output_path(level_path(output_path, i), {input_path, output_path, report_path, histogram_path});
+      outputs.push_back({"level " + std::to_string(i) + " of --lod", level_path(output_path, i)});
+    check_paths({{"INPUT", input_path}}, outputs);
+    if(!NR::internal::is_mesh_extension(NR::internal::file_extension(output_path)))
+      throw NR::Output_error("cannot write '" + output_path + "': unsupported extension (expected .off, .obj, .ply or .stl)");
 
     const Mesh input = load_mesh(input_path);
     const NR::Sign_source source = signs == "patches" ? NR::Sign_source::patches : NR::Sign_source::inside_test;
@@ -401,7 +408,10 @@ int remesh_command(int argc, char** argv)
               NR::parameters::early_smoothing(vm.count("no-early-smoothing") == 0),
               NR::parameters::tangential_smoothing(vm.count("no-tangential-smoothing") == 0),
               NR::parameters::attract_features(vm.count("no-feature-attraction") == 0),
-              NR::parameters::remeshing_visitor(std::ref(progress))));
+              NR::parameters::remeshing_visitor(std::ref(progress)),
+              NR::parameters::memory_budget(memory_limit * 1024. * 1024. * 1024.)));
+    } catch(const NR::Memory_budget_exceeded& e) {
+      throw NR::Bad_input("'" + input_path + "': " + e.what() + " (--memory-limit, in GiB)");
     } catch(const std::invalid_argument& e) {  // the arguments were checked: it is the input
       throw NR::Bad_input("'" + input_path + "': " + e.what());
     }
@@ -415,6 +425,12 @@ int remesh_command(int argc, char** argv)
       std::cout << "note: " << stats.degenerate_faces_removed
                 << " zero-area input face(s) removed first (CGAL's remove_degenerate_faces, on a copy)\n";
     print_initial_mesh(std::cout, stats.initial_mesh);
+    if(stats.input_components_missing > 0)
+      std::cout << "note: " << stats.input_components_missing << " of the input's " << stats.input_components
+                << " connected component(s) do not appear in the output: none of their vertices lies within a "
+                   "cube diagonal of it (the largest is "
+                << std::setprecision(3) << stats.largest_missing_component << " across, the cube size "
+                << stats.initial_mesh.cube_size << "): they are below the resolution\n";
     if(stats.valence_run) print_valence(std::cout, stats.valence);
     if(stats.fit_run) print_fit(std::cout, stats.fit);
 
@@ -499,6 +515,11 @@ int remesh_command(int argc, char** argv)
         j["table_7_2"] = table_7_2_json(input_report, report, stats.fit, vm.count("no-lazy-evaluation") == 0,
                                         vm.count("no-early-smoothing") == 0);
       j["init"] = initial_mesh_json(stats.initial_mesh);
+      j["input_components"] = {{"components", stats.input_components},
+                               {"missing", stats.input_components_missing},
+                               {"largest_missing_diameter", stats.largest_missing_component},
+                               {"missing_means", "no vertex of the component lies within a cube diagonal of the "
+                                                 "output: it is below the resolution"}};
       if(stats.valence_run) j["valence"] = valence_json(stats.valence);
       if(stats.fit_run) j["fit"] = fit_json(stats.fit);
       j["output_report"] = report_to_json(output_path, report, {});

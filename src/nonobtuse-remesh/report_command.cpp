@@ -90,7 +90,7 @@ int report_command(int argc, char** argv)
     const NR::Angle_bounds bounds(min_angle, max_angle);
     if(!(hausdorff_error > 0.))
       throw std::invalid_argument("--hausdorff-error must be positive");
-    if(!json_path.empty()) check_output_path(json_path, {path, reference_path});
+    check_paths({{"MESH", path}, {"--reference", reference_path}}, {{"--json", json_path}});
 
     NR::Read_log log;
     const Mesh mesh = load_mesh(path, &log);
@@ -101,12 +101,18 @@ int report_command(int argc, char** argv)
         throw NR::Bad_input("the reference '" + reference_path + "' has a zero-size bounding box");
     }
 
-    const NR::Quality_report r = NR::quality_report(
+    NR::Quality_report r = NR::quality_report(
         mesh, reference_path.empty() ? nullptr : &reference,
         NR::parameters::combine(NR::parameters::min_angle(bounds.min_degrees()),
                                 NR::parameters::max_angle(bounds.max_degrees()),
                                 NR::parameters::hausdorff_relative_error(hausdorff_error),
                                 NR::parameters::maximum_self_intersections(max_self_intersections)));
+    // the certificate is about the file as written: a face the reader had to
+    // triangulate, drop or merge is not certified by the mesh's certificate
+    if(!log.faces_as_written()) {
+      r.certified = false;
+      std::cout << "note: '" << path << "' is not certified as written: it has " << log.faces_changed() << "\n";
+    }
     print_report(std::cout, path, r);
     if(!json_path.empty()) write_json_atomically(json_path, report_to_json(path, r, log.repairs));
     return int(success);

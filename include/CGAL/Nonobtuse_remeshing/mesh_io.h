@@ -10,6 +10,7 @@
 #define CGAL_NONOBTUSE_REMESHING_MESH_IO_H
 
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
+#include <CGAL/Nonobtuse_remeshing/internal/soup_readers.h>
 
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -26,6 +27,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -53,10 +55,44 @@ struct Output_error : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
-/// What `read_triangle_mesh()` had to do to the file's contents, one line each.
+/// What `read_triangle_mesh()` found in the file and had to do to it.
 struct Read_log
 {
+  /// each repair, one line
   std::vector<std::string> repairs;
+  /// faces in the file, as written
+  std::size_t faces_in_file = 0;
+  /// faces with more than three vertices, triangulated
+  std::size_t non_triangle_faces = 0;
+  /// faces that repeat a vertex, dropped
+  std::size_t faces_with_repeated_vertex = 0;
+  /// faces that repeat another face (either orientation), merged into it
+  std::size_t duplicate_faces = 0;
+  /// OBJ `l` and `p` elements, ignored
+  std::size_t ignored_elements = 0;
+
+  /// True when the mesh holds every face of the file, each a triangle of three
+  /// distinct vertices, as written (faces may have been reoriented and
+  /// vertices duplicated or dropped, which changes no angle). A certificate of
+  /// the mesh is a certificate of the file only then.
+  bool faces_as_written() const
+  {
+    return non_triangle_faces == 0 && faces_with_repeated_vertex == 0 && duplicate_faces == 0;
+  }
+
+  /// Why `faces_as_written()` is false, as a phrase ("2 non-triangle faces, ...").
+  std::string faces_changed() const
+  {
+    std::string text;
+    const auto add = [&text](std::size_t n, const char* what) {
+      if(n == 0) return;
+      text += (text.empty() ? "" : ", ") + std::to_string(n) + " " + what;
+    };
+    add(non_triangle_faces, "non-triangle face(s)");
+    add(faces_with_repeated_vertex, "face(s) that repeat a vertex");
+    add(duplicate_faces, "duplicate face(s)");
+    return text;
+  }
 };
 
 namespace internal {
@@ -94,35 +130,9 @@ inline bool has_non_finite_token(const std::string& path)
   return false;
 }
 
-// CGAL's OFF reader sizes its arrays from the header before reading them: a
-// header that announces more elements than the file can hold is refused
-// first (an ASCII vertex takes at least 6 bytes, a face at least 8; binary
-// ones more), so that a lying header cannot exhaust memory.
-inline void check_off_header(const std::string& path, std::uintmax_t file_size)
-{
-  std::ifstream in(path);
-  std::string token;
-  std::vector<std::string> tokens;
-  while(tokens.size() < 5 && in >> token) {
-    if(token[0] == '#') { std::getline(in, token); continue; }
-    tokens.push_back(token);
-  }
-  std::size_t first = 0;
-  while(first < tokens.size() && (tokens[first].find("OFF") != std::string::npos || tokens[first] == "BINARY"))
-    ++first;
-  if(first == 0 || first + 2 > tokens.size())
-    return;  // not an OFF header CGAL would accept: let it say so
-  char* end = nullptr;
-  const double vertices = std::strtod(tokens[first].c_str(), &end);
-  const double faces = std::strtod(tokens[first + 1].c_str(), &end);
-  if(vertices > double(file_size) / 6. || faces > double(file_size) / 8.)
-    throw Bad_input("'" + path + "' announces " + tokens[first] + " vertices and " + tokens[first + 1] +
-                    " faces, more than its " + std::to_string(file_size) + " bytes can hold");
-}
-
 template <typename Point>
 void read_soup(const std::string& path, std::vector<Point>& points,
-               std::vector<std::vector<std::size_t> >& polygons)
+               std::vector<std::vector<std::size_t> >& polygons, std::size_t& ignored_elements)
 {
   const std::string ext = file_extension(path);
   if(!is_mesh_extension(ext))
@@ -136,14 +146,25 @@ void read_soup(const std::string& path, std::vector<Point>& points,
     throw Bad_input("cannot open '" + path + "': permission denied");
   if(status.st_size == 0)
     throw Bad_input("'" + path + "' is empty");
-  if(ext == "off")
-    check_off_header(path, std::uintmax_t(status.st_size));
   bool ok = false;
   try {
-    if(ext == "off") ok = CGAL::IO::read_OFF(path, points, polygons);
-    else if(ext == "obj") ok = CGAL::IO::read_OBJ(path, points, polygons);
-    else if(ext == "ply") ok = CGAL::IO::read_PLY(path, points, polygons);
-    else ok = CGAL::IO::read_STL(path, points, polygons);
+    if(ext == "off" || ext == "stl") {
+      const std::string contents = slurp_file(path);
+      if(ext == "off") check_OFF_counts(contents);
+      else check_STL_size(contents);
+    }
+    if(ext == "obj" || ext == "ply") {
+      const std::string contents = slurp_file(path);
+      if(ext == "obj") read_OBJ_soup(contents, points, polygons, ignored_elements);
+      else read_PLY_soup(contents, points, polygons);
+      ok = true;
+    } else if(ext == "off") {
+      ok = CGAL::IO::read_OFF(path, points, polygons);
+    } else {
+      ok = CGAL::IO::read_STL(path, points, polygons);
+    }
+  } catch(const Format_error& e) {
+    throw Bad_input("cannot read '" + path + "' as " + ext + ": " + e.what());
   } catch(const std::exception&) {
     ok = false;
   }
@@ -185,6 +206,9 @@ void check_and_repair_soup(const std::string& path, std::vector<Point>& points,
                                   return bad;
                                 }),
                  polygons.end());
+  log.faces_in_file = polygons.size() + repeated;
+  log.faces_with_repeated_vertex = repeated;
+  for(const auto& polygon : polygons) log.non_triangle_faces += (polygon.size() > 3);
   if(repeated > 0)
     log.repairs.push_back("removed " + std::to_string(repeated) +
                           " face(s) that repeat a vertex");
@@ -193,6 +217,7 @@ void check_and_repair_soup(const std::string& path, std::vector<Point>& points,
 
   if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons)) {
     const std::size_t duplicates = Polygon_mesh_processing::merge_duplicate_polygons_in_polygon_soup(points, polygons);
+    log.duplicate_faces = duplicates;
     if(duplicates > 0)
       log.repairs.push_back("merged " + std::to_string(duplicates) + " duplicate face(s) (same vertices, either orientation)");
   }
@@ -220,9 +245,13 @@ void read_triangle_mesh(const std::string& path, PolygonMesh& mesh, Read_log& lo
 {
   using Point = typename boost::property_traits<
       typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>::value_type;
+  log = Read_log();
   std::vector<Point> points;
   std::vector<std::vector<std::size_t> > polygons;
-  internal::read_soup(path, points, polygons);
+  internal::read_soup(path, points, polygons, log.ignored_elements);
+  if(log.ignored_elements > 0)
+    log.repairs.push_back("ignored " + std::to_string(log.ignored_elements) +
+                          " polyline or point element(s) (OBJ 'l' and 'p' lines)");
   internal::check_and_repair_soup(path, points, polygons, log);
 
   // vertices used by no face are dropped, the others renumbered
@@ -245,11 +274,9 @@ void read_triangle_mesh(const std::string& path, PolygonMesh& mesh, Read_log& lo
   clear(mesh);
   Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   if(!is_triangle_mesh(mesh)) {
-    std::size_t polygons_to_split = 0;
-    for(const auto& polygon : polygons) polygons_to_split += (polygon.size() > 3);
     if(!Polygon_mesh_processing::triangulate_faces(mesh))
       throw Bad_input("'" + path + "': a non-triangle face could not be triangulated");
-    log.repairs.push_back("triangulated " + std::to_string(polygons_to_split) +
+    log.repairs.push_back("triangulated " + std::to_string(log.non_triangle_faces) +
                           " non-triangle face(s)");
   }
 }
@@ -259,6 +286,59 @@ void read_triangle_mesh(const std::string& path, PolygonMesh& mesh)
 {
   Read_log log;
   read_triangle_mesh(path, mesh, log);
+}
+
+namespace internal {
+
+// The temporary files of the writes in progress, kept where a signal handler
+// can read them without allocating: a fixed table of slots, each free (0),
+// being filled (1) or holding a path (2).
+struct Temporary_files
+{
+  static constexpr int slots = 16;
+  static constexpr std::size_t length = 4096;
+  std::atomic<int> state[slots] = {};
+  char paths[slots][length] = {};
+
+  static Temporary_files& instance()
+  {
+    static Temporary_files files;
+    return files;
+  }
+
+  // returns the slot, or -1 when the path is too long or every slot is taken
+  int add(const std::string& path)
+  {
+    if(path.size() >= length) return -1;
+    for(int i = 0; i < slots; ++i) {
+      int expected = 0;
+      if(state[i].compare_exchange_strong(expected, 1)) {
+        std::memcpy(paths[i], path.c_str(), path.size() + 1);
+        state[i].store(2);
+        return i;
+      }
+    }
+    return -1;
+  }
+
+  void remove(int slot)
+  {
+    if(slot >= 0) state[slot].store(0);
+  }
+};
+
+} // namespace internal
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Removes the temporary files of the atomic writes in progress (see
+/// `write_file_atomically()`). Async-signal-safe: a program calls it from its
+/// SIGINT and SIGTERM handlers so that an interrupted write leaves nothing
+/// behind (the target file is untouched until the final rename).
+inline void remove_temporary_files() noexcept
+{
+  internal::Temporary_files& files = internal::Temporary_files::instance();
+  for(int i = 0; i < internal::Temporary_files::slots; ++i)
+    if(files.state[i].load() == 2) ::unlink(files.paths[i]);
 }
 
 /// \ingroup PkgNonobtuseRemeshingRef
@@ -278,8 +358,18 @@ inline void write_file_atomically(const std::string& path,
   if(name.empty())
     throw Output_error("cannot write '" + path + "': not a file name");
   const std::string ext = internal::file_extension(name);
-  const std::string temporary = folder + "." + name + ".tmp-" + std::to_string(::getpid()) + "-" +
-                                std::to_string(counter++) + (ext.empty() ? "" : "." + ext);
+  // "." + name + ".tmp-PID-N.EXT", the name cut so that the whole fits a
+  // file name (255 bytes)
+  const std::string suffix = ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) +
+                             (ext.empty() ? "" : "." + ext);
+  const std::size_t room = 255 - 1 - suffix.size();
+  const std::string temporary = folder + "." + name.substr(0, room) + suffix;
+  const int slot = internal::Temporary_files::instance().add(temporary);
+  struct Unregister
+  {
+    int slot;
+    ~Unregister() { internal::Temporary_files::instance().remove(slot); }
+  } unregister{slot};
   bool written = false;
   try {
     written = write_contents(temporary);
@@ -348,8 +438,9 @@ void write_mesh_atomically(const std::string& path, const PolygonMesh& mesh,
 
 /// \ingroup PkgNonobtuseRemeshingRef
 /// A `check` for `write_mesh_atomically()` that makes the guarantee hold on
-/// the file itself: it re-reads the temporary file and accepts it only if it
-/// certifies exactly in [30, 90] degrees with as many faces as `mesh`. If
+/// the file itself: it re-reads the temporary file and accepts it only if its
+/// faces are read as written (see `Read_log::faces_as_written()`), certify
+/// exactly in [30, 90] degrees and are as many as those of `mesh`. If
 /// `file_faces` is given, it receives the faces of the file. `mesh` must outlive
 /// the check.
 ///
@@ -359,14 +450,15 @@ std::function<bool(const std::string&)> certifying_check(const TriangleMesh& mes
 {
   return [&mesh, file_faces](const std::string& temporary) {
     TriangleMesh reread;
+    Read_log log;
     try {
-      read_triangle_mesh(temporary, reread);
+      read_triangle_mesh(temporary, reread, log);
     } catch(const Bad_input&) {  // e.g. a mesh without faces: it does not certify
       return false;
     }
     const Angle_certificate certificate = certify_angle_bounds(reread);
     if(file_faces) *file_faces = certificate.faces;
-    return certificate.is_certified() && certificate.faces == faces(mesh).size();
+    return certificate.is_certified() && log.faces_as_written() && certificate.faces == faces(mesh).size();
   };
 }
 

@@ -7,6 +7,7 @@
 
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
 #include <CGAL/Nonobtuse_remeshing/deform_to_fit.h>
+#include <CGAL/Nonobtuse_remeshing/internal/missing_components.h>
 #include <CGAL/Nonobtuse_remeshing/nonobtuse_marching_cubes.h>
 #include <CGAL/Nonobtuse_remeshing/parameters.h>
 #include <CGAL/Nonobtuse_remeshing/remove_bad_valence_vertices.h>
@@ -76,6 +77,13 @@ struct Nonobtuse_remeshing_statistics
   bool fit_run = false;
   Deform_to_fit_statistics fit;            ///< Table 7.2
   bool cancelled = false;                  ///< the visitor stopped the pipeline
+  /// connected components of the input (beyond the thesis)
+  std::size_t input_components = 0;
+  /// input components none of whose vertices lies within a cube diagonal of
+  /// the output: smaller or thinner than the resolution, they are lost
+  std::size_t input_components_missing = 0;
+  /// bounding-box diagonal of the largest missing input component
+  double largest_missing_component = 0.;
   double seconds = 0.;
 };
 
@@ -204,6 +212,8 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh(const TriangleMesh& input, Trian
   if(stats.resolution < 1 || stats.resolution > 1024)
     throw std::invalid_argument("the resolution must lie in [1, 1024]");
   const Sign_source signs = choose_parameter(get_parameter(np, internal_np::sign_source), Sign_source::patches);
+  const double budget = choose_parameter(get_parameter(np, internal_np::memory_budget), default_memory_budget);
+  if(!(budget > 0.)) throw std::invalid_argument("the memory budget must be positive");
 
   auto given = choose_parameter(get_parameter(np, internal_np::remeshing_visitor), Default_remeshing_visitor());
   auto& visitor = internal::visitor_reference(given);
@@ -216,6 +226,13 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh(const TriangleMesh& input, Trian
     return !stats.cancelled;
   };
   const auto finish = [&]() {
+    if(num_faces(output) > 0) {
+      const internal::Component_accounting accounting =
+          internal::missing_components(input, output, std::sqrt(3.) * stats.initial_mesh.cube_size);
+      stats.input_components = accounting.input_components;
+      stats.input_components_missing = accounting.missing;
+      stats.largest_missing_component = accounting.largest_missing_diameter;
+    }
     stats.seconds = seconds_since(start);
     return stats;
   };
@@ -244,7 +261,9 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh(const TriangleMesh& input, Trian
     auto stage_start = Clock::now();
     const auto build = [&](int resolution, TriangleMesh& mesh) {
       return nonobtuse_marching_cubes(
-          *surface, mesh, parameters::combine(parameters::resolution(resolution), parameters::sign_source(signs)));
+          *surface, mesh,
+          parameters::combine(parameters::resolution(resolution), parameters::sign_source(signs),
+                              parameters::memory_budget(budget)));
     };
     stats.initial_mesh = build(stats.resolution, output);
     if(stats.target_vertices > 0) {

@@ -38,10 +38,11 @@ struct Cube_triangles
   std::size_t size() const { return cube_ids.size(); }
 };
 
-// Triangles with `usable[t]` false (degenerate ones) are left out.
-inline Cube_triangles mesh_cube_intersection(const Grid& grid,
-                                             const std::vector<Epick::Triangle_3>& triangles,
-                                             const std::vector<bool>& usable)
+// Triangles with `usable[t]` false (degenerate ones) are left out. Returns
+// false, with `result` empty, as soon as there are more than `max_pairs`
+// (cube, triangle) pairs: the caller's memory budget is then exceeded.
+inline bool mesh_cube_intersection(const Grid& grid, const std::vector<Epick::Triangle_3>& triangles,
+                                   const std::vector<bool>& usable, std::size_t max_pairs, Cube_triangles& result)
 {
   std::vector<std::pair<std::int64_t, std::size_t> > pairs;
   const double h = grid.cube_size();
@@ -68,6 +69,7 @@ inline Cube_triangles mesh_cube_intersection(const Grid& grid,
                                       (box.max(1) - box.min(1)) * (box.max(1) - box.min(1)) +
                                       (box.max(2) - box.min(2)) * (box.max(2) - box.min(2)));
     const double margin = 1e-9 * std::sqrt(n2) * (diameter + 4 * h);
+    if(pairs.size() > max_pairs) return false;
     auto test = [&](int i, int j, int k) {
       if(use_plane) {
         const double cx = grid.coordinate(0, 2 * i + 1) - tri[0].x();
@@ -114,8 +116,8 @@ inline Cube_triangles mesh_cube_intersection(const Grid& grid,
         }
       }
   }
+  if(pairs.size() > max_pairs) return false;
   std::sort(pairs.begin(), pairs.end());
-  Cube_triangles result;
   for(const auto& p : pairs) {
     if(result.cube_ids.empty() || result.cube_ids.back() != p.first) {
       result.cube_ids.push_back(p.first);
@@ -124,7 +126,7 @@ inline Cube_triangles mesh_cube_intersection(const Grid& grid,
     result.triangles.push_back(p.second);
   }
   result.first.push_back(result.triangles.size());
-  return result;
+  return true;
 }
 
 } // namespace internal
