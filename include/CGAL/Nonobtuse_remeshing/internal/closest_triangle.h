@@ -47,7 +47,8 @@ class Closest_triangle
 
 public:
   explicit Closest_triangle(const TriangleMesh& input, int quadric_rings = 1)
-    : input_(input), tree_(faces(input).first, faces(input).second, input), rings_(quadric_rings)
+    : input_(input), tree_(faces(input).first, faces(input).second, input), rings_(quadric_rings),
+      mark_(input.num_faces(), 0u)
   {
     tree_.accelerate_distance_queries();
     for(auto h : halfedges(input))
@@ -66,29 +67,46 @@ public:
 
   /// Closest triangle among the three rings around `hint` (faces sharing a
   /// vertex, ring by ring); the tree answers when the best one is on the
-  /// outermost ring, where a closer one may lie beyond.
+  /// outermost ring, where a closer one may lie beyond, and when the rings
+  /// hold more than `ring_budget` faces (long, thin input triangles, such as
+  /// a many-sided polygon's triangulation, put a large part of the input
+  /// within three rings), so that a query costs at most the budget and one
+  /// tree query whatever the input's triangle shapes. Faces already seen are
+  /// marked by a per-query stamp, not searched for.
   face_descriptor closest_near(const Point& p, face_descriptor hint) const
   {
-    std::vector<face_descriptor> ring = {hint}, seen = {hint};
+    if(++stamp_ == 0) {  // wrapped around: clear the marks
+      std::fill(mark_.begin(), mark_.end(), 0u);
+      stamp_ = 1;
+    }
+    std::vector<face_descriptor> ring = {hint}, next;
+    mark_[std::size_t(hint)] = stamp_;
+    std::size_t visited = 1;
     face_descriptor best = hint;
     double best_distance = squared_distance(p, triangle(hint));
     int best_ring = 0;
     for(int r = 1; r <= 3; ++r) {
-      std::vector<face_descriptor> next;
+      next.clear();
       for(face_descriptor f : ring)
         for(auto v : vertices_around_face(halfedge(f, input_), input_))
           for(face_descriptor g : faces_around_target(halfedge(v, input_), input_)) {
-            if(g == boost::graph_traits<TriangleMesh>::null_face() ||
-               std::find(seen.begin(), seen.end(), g) != seen.end())
-              continue;
-            seen.push_back(g);
+            if(g == boost::graph_traits<TriangleMesh>::null_face() || mark_[std::size_t(g)] == stamp_) continue;
+            if(++visited > ring_budget) return closest(p, best);
+            mark_[std::size_t(g)] = stamp_;
             next.push_back(g);
             const double d = squared_distance(p, triangle(g));
             if(d < best_distance) { best_distance = d; best = g; best_ring = r; }
           }
       ring.swap(next);
     }
-    return best_ring == 3 ? closest(p) : best;
+    return best_ring == 3 ? closest(p, best) : best;
+  }
+
+  /// The tree's answer, its search started from `hint`'s closest point.
+  face_descriptor closest(const Point& p, face_descriptor hint) const
+  {
+    const Point on_hint = Epick().construct_projected_point_3_object()(triangle(hint), p);
+    return tree_.closest_point_and_primitive(p, std::make_pair(on_hint, hint)).second;
   }
 
   /// The fitting quadric of `f` and its r-ring neighbours (thesis, 5.3: the
@@ -182,6 +200,11 @@ private:
   const TriangleMesh& input_;
   Face_tree tree_;
   int rings_;
+  // faces visited by closest_near (three rings of a regular mesh hold about
+  // 80 faces, at most 171 on the shipped meshes)
+  static constexpr std::size_t ring_budget = 256;
+  mutable std::vector<unsigned> mark_;  // closest_near's visit stamps, per face index
+  mutable unsigned stamp_ = 0;
   std::vector<Epick::Segment_3> border_;
   Segment_tree border_tree_;
 };
