@@ -158,10 +158,12 @@ TEST(Cli, RepairsAreAnnounced)
 {
   const std::string folder = scratch();
   std::ofstream(folder + "/quad.off") << "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
-  const Outcome quad = run("certify " + folder + "/quad.off");
+  const Outcome quad = run("report " + folder + "/quad.off");
   EXPECT_EQ(quad.code, 0) << quad.err;  // two 45-45-90 triangles
   EXPECT_NE(quad.err.find("note:"), std::string::npos);
   EXPECT_NE(quad.err.find("triangulated 1 non-triangle face"), std::string::npos);
+  // a certificate is about the file as written: a quad is not a triangle
+  EXPECT_EQ(run("certify " + folder + "/quad.off").code, 1);
 
   // two closed tetrahedra glued at one vertex: not a valid polygon mesh,
   // repaired by duplicating that vertex

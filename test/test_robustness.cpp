@@ -292,6 +292,7 @@ struct Outcome
   int code = -1;
   std::string out, err;
   double seconds = 0.;
+  double peak_mib = 0.;  // peak resident memory of the run
   bool certified = false;
   Mesh mesh;  // the written output, re-read, when code == 0
 };
@@ -312,6 +313,9 @@ std::vector<std::string> split_lines(const std::string& text)
 }
 
 const int time_limit_seconds = 120;
+// Every case of the corpus stays under this peak memory (the README's budget
+// for the corpus).
+const double peak_memory_budget_mib = 1024.;
 
 // Writes `contents` as `name`/in.off in a fresh folder, runs
 // `remesh in.off -o out.off -N resolution -q` under a time limit, and checks
@@ -329,9 +333,11 @@ Outcome remesh(const std::string& name, const std::string& contents, int resolut
                               " -q >'" + folder + ".stdout' 2>'" + folder + ".stderr'";
   Outcome r;
   const auto start = std::chrono::steady_clock::now();
-  const int status = std::system(command.c_str());
+  const nonobtuse_test::Shell_run run = nonobtuse_test::run_shell(command);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.code = run.code;
+  r.peak_mib = run.peak_mib;
+  EXPECT_LT(r.peak_mib, peak_memory_budget_mib) << name << ": peak memory";
   r.out = slurp(folder + ".stdout");
   r.err = slurp(folder + ".stderr");
   const std::string what = name + " (" + command + ")";
@@ -369,7 +375,8 @@ Outcome remesh(const std::string& name, const std::string& contents, int resolut
     std::cout << ", " << num_faces(r.mesh) << " faces, " << topology(r.mesh) << (r.certified ? ", certified" : ", NOT CERTIFIED");
   else
     std::cout << ": " << r.err.substr(0, r.err.find('\n'));
-  std::cout << std::fixed << std::setprecision(2) << " (" << r.seconds << " s)" << std::defaultfloat << std::endl;
+  std::cout << std::fixed << std::setprecision(2) << " (" << r.seconds << " s, peak " << std::setprecision(0)
+            << r.peak_mib << " MiB)" << std::defaultfloat << std::endl;
   if(!::testing::Test::HasFailure())
     std::system(("rm -rf '" + folder + "' '" + folder + ".stdout' '" + folder + ".stderr'").c_str());
   return r;

@@ -14,6 +14,8 @@
 #include <set>
 #include <string>
 #include <dirent.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace nonobtuse_test {
@@ -41,6 +43,30 @@ inline Mesh written_and_reread(const Mesh& mesh, const std::string& name)
   CGAL::Nonobtuse_remeshing::read_triangle_mesh(path, reread);
   std::remove(path.c_str());
   return reread;
+}
+
+// Runs `command` with /bin/sh in a child process; returns its exit code
+// (128 + the signal when a signal ended it) and its peak resident memory.
+struct Shell_run
+{
+  int code = -1;
+  double peak_mib = 0.;
+};
+
+inline Shell_run run_shell(const std::string& command)
+{
+  Shell_run r;
+  const pid_t child = ::fork();
+  if(child == 0) {
+    ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  int status = 0;
+  struct rusage usage;
+  ::wait4(child, &status, 0, &usage);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.peak_mib = double(usage.ru_maxrss) / 1024.;
+  return r;
 }
 
 // A fresh scratch folder per test.

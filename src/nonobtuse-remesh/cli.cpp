@@ -13,6 +13,7 @@
 #include <climits>
 #include <cstdlib>
 
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -215,7 +216,12 @@ extern "C" void remove_temporaries_and_die(int signal_number)
 
 void install_signal_cleanup()
 {
-  for(int signal_number : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal_number, remove_temporaries_and_die);
+  for(int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction current;
+    if(::sigaction(signal_number, nullptr, &current) == 0 && current.sa_handler == SIG_IGN)
+      continue;  // ignored by whoever started us (nohup, a background job): left so
+    std::signal(signal_number, remove_temporaries_and_die);
+  }
 }
 
 void Progress_line::show(const std::string& text, bool force)

@@ -93,7 +93,8 @@ private:
 };
 
 // Makes SIGINT, SIGTERM and SIGHUP remove the temporary files of the writes
-// in progress before the program ends as the signal says.
+// in progress before the program ends as the signal says (a signal the
+// parent process ignores stays ignored).
 void install_signal_cleanup();
 
 int certify_command(int argc, char** argv);

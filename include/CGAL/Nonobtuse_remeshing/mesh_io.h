@@ -148,23 +148,20 @@ void read_soup(const std::string& path, std::vector<Point>& points,
     throw Bad_input("'" + path + "' is empty");
   bool ok = false;
   try {
-    if(ext == "off" || ext == "stl") {
+    if(ext == "stl") {
+      check_STL_size(slurp_file(path));
+      ok = CGAL::IO::read_STL(path, points, polygons);
+    } else {
       const std::string contents = slurp_file(path);
-      if(ext == "off") check_OFF_counts(contents);
-      else check_STL_size(contents);
-    }
-    if(ext == "obj" || ext == "ply") {
-      const std::string contents = slurp_file(path);
-      if(ext == "obj") read_OBJ_soup(contents, points, polygons, ignored_elements);
+      if(ext == "off") read_OFF_soup(contents, points, polygons);
+      else if(ext == "obj") read_OBJ_soup(contents, points, polygons, ignored_elements);
       else read_PLY_soup(contents, points, polygons);
       ok = true;
-    } else if(ext == "off") {
-      ok = CGAL::IO::read_OFF(path, points, polygons);
-    } else {
-      ok = CGAL::IO::read_STL(path, points, polygons);
     }
   } catch(const Format_error& e) {
-    throw Bad_input("cannot read '" + path + "' as " + ext + ": " + e.what());
+    throw Bad_input("cannot parse '" + path + "' as " + ext + ": " + e.what());
+  } catch(const std::bad_alloc&) {
+    throw;  // not the file's fault: an internal failure
   } catch(const std::exception&) {
     ok = false;
   }
@@ -215,13 +212,16 @@ void check_and_repair_soup(const std::string& path, std::vector<Point>& points,
   if(polygons.empty())
     throw Bad_input("'" + path + "' holds no valid face (empty mesh)");
 
-  if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons)) {
+  // (the test costs much on polygons of many sides: it runs once when it passes)
+  bool valid = Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons);
+  if(!valid) {
     const std::size_t duplicates = Polygon_mesh_processing::merge_duplicate_polygons_in_polygon_soup(points, polygons);
     log.duplicate_faces = duplicates;
     if(duplicates > 0)
       log.repairs.push_back("merged " + std::to_string(duplicates) + " duplicate face(s) (same vertices, either orientation)");
+    valid = duplicates > 0 && Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons);
   }
-  if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons)) {
+  if(!valid) {
     const std::size_t before = points.size();
     Polygon_mesh_processing::orient_polygon_soup(points, polygons);
     if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
@@ -332,7 +332,7 @@ struct Temporary_files
 /// \ingroup PkgNonobtuseRemeshingRef
 /// Removes the temporary files of the atomic writes in progress (see
 /// `write_file_atomically()`). Async-signal-safe: a program calls it from its
-/// SIGINT and SIGTERM handlers so that an interrupted write leaves nothing
+/// SIGINT, SIGTERM and SIGHUP handlers so that an interrupted write leaves nothing
 /// behind (the target file is untouched until the final rename).
 inline void remove_temporary_files() noexcept
 {
