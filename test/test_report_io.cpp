@@ -310,7 +310,7 @@ TEST(MeshIO, BadInputIsRefusedWithAReason)
   expect_refused("garbage.off", "this is not a mesh\n\x01\x02\x03", "cannot parse");
   expect_refused("no_faces.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n", "no face");
   expect_refused("nan.off", "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n", "non-finite");
-  expect_refused("index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n", "cannot parse");
+  expect_refused("index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n", "refers to vertex 7");
   expect_refused("index.ply",
                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
                  "property double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
