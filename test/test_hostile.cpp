@@ -44,13 +44,8 @@ using nonobtuse_test::Mesh;
 using nonobtuse_test::folder_entries;
 using nonobtuse_test::scratch_folder;
 
-std::string data(const std::string& name) { return std::string(NONOBTUSE_TEST_DATA) + "/" + name; }
-
-std::string slurp(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
+using nonobtuse_test::data;
+using nonobtuse_test::slurp;
 
 void spit(const std::string& path, const std::string& contents) { std::ofstream(path, std::ios::binary) << contents; }
 

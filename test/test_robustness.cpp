@@ -80,7 +80,7 @@ Vec sub(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b
 Vec mul(double s, const Vec& a) { return {s * a[0], s * a[1], s * a[2]}; }
 double norm(const Vec& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 
-std::string data(const std::string& name) { return std::string(NONOBTUSE_TEST_DATA) + "/" + name; }
+using nonobtuse_test::data;
 
 // A shipped mesh as the raw soup its file holds.
 Soup shipped(const std::string& name)
@@ -297,11 +297,7 @@ struct Outcome
   Mesh mesh;  // the written output, re-read, when code == 0
 };
 
-std::string slurp(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
+using nonobtuse_test::slurp;
 
 
 std::vector<std::string> split_lines(const std::string& text)
@@ -376,7 +372,7 @@ Outcome remesh(const std::string& name, const std::string& contents, int resolut
   else
     std::cout << ": " << r.err.substr(0, r.err.find('\n'));
   std::cout << std::fixed << std::setprecision(2) << " (" << r.seconds << " s, peak " << std::setprecision(0)
-            << r.peak_mib << " MiB)" << std::defaultfloat << std::endl;
+            << r.peak_mib << " MiB)" << std::defaultfloat << std::setprecision(6) << std::endl;
   if(!::testing::Test::HasFailure())
     std::system(("rm -rf '" + folder + "' '" + folder + ".stdout' '" + folder + ".stderr'").c_str());
   return r;

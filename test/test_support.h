@@ -11,6 +11,8 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <set>
 #include <string>
 #include <dirent.h>
@@ -25,6 +27,13 @@ using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 
 inline std::string data(const std::string& name) { return std::string(NONOBTUSE_TEST_DATA) + "/" + name; }
+
+// The whole file, bytes as they are.
+inline std::string slurp(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
 
 inline Mesh load(const std::string& name)
 {

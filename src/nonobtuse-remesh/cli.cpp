@@ -69,12 +69,18 @@ struct File_identity
   }
 };
 
+// A path's folder ("." when it has none; ending with '/' otherwise) and file name.
+std::pair<std::string, std::string> split_path(const std::string& path)
+{
+  const std::size_t slash = path.find_last_of('/');
+  if(slash == std::string::npos) return {".", path};
+  return {path.substr(0, slash + 1), path.substr(slash + 1)};
+}
+
 File_identity identify(const std::string& path)
 {
   File_identity id;
-  const std::size_t slash = path.find_last_of('/');
-  const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
-  const std::string name = path.substr(slash == std::string::npos ? 0 : slash + 1);
+  const auto [folder, name] = split_path(path);
   if(char* real = ::realpath(folder.c_str(), nullptr)) {
     id.canonical = std::string(real) + "/" + name;
     std::free(real);
@@ -99,9 +105,7 @@ void check_paths(const std::vector<Named_path>& inputs, const std::vector<Named_
   for(const Named_path& output : outputs) {
     const std::string& path = output.path;
     if(path.empty()) continue;
-    const std::size_t slash = path.find_last_of('/');
-    const std::string folder = (slash == std::string::npos) ? "." : path.substr(0, slash + 1);
-    const std::string name = path.substr(slash == std::string::npos ? 0 : slash + 1);
+    const auto [folder, name] = split_path(path);
     if(name.empty() || name == "." || name == "..")
       throw NR::Output_error("cannot write '" + path + "' (" + output.option + "): not a file name");
     if(::access(folder.c_str(), W_OK) != 0)

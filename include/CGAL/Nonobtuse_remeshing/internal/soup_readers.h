@@ -142,12 +142,12 @@ void read_OBJ_soup(const std::string& contents, std::vector<Point>& points,
     ++line_number;
     std::string_view keyword, token;
     if(!tokens.next_on_line(keyword)) continue;
-    const std::string where = "line " + std::to_string(line_number);
+    const auto where = [line_number]() { return "line " + std::to_string(line_number); };  // for errors only
     if(keyword == "v") {
       double xyz[3];
       for(double& c : xyz)
         if(!tokens.next_on_line(token) || !parse_double(token, c))
-          throw Format_error(where + ": a vertex needs three numbers");
+          throw Format_error(where() + ": a vertex needs three numbers");
       points.emplace_back(xyz[0], xyz[1], xyz[2]);
     } else if(keyword == "f") {
       std::vector<std::size_t> polygon;
@@ -155,11 +155,11 @@ void read_OBJ_soup(const std::string& contents, std::vector<Point>& points,
         const std::string_view reference = token.substr(0, token.find('/'));
         long long index = 0;
         if(!parse_integer(reference, -(1LL << 53), 1LL << 53, index))
-          throw Format_error(where + ": " + shown_token(token) + " is not a vertex reference");
-        if(index == 0) throw Format_error(where + ": vertex index 0 (OBJ indices start at 1)");
+          throw Format_error(where() + ": " + shown_token(token) + " is not a vertex reference");
+        if(index == 0) throw Format_error(where() + ": vertex index 0 (OBJ indices start at 1)");
         const long long resolved = index > 0 ? index - 1 : (long long)(points.size()) + index;
         if(resolved < 0)
-          throw Format_error(where + ": relative vertex index " + shown_token(reference) + " before the first vertex");
+          throw Format_error(where() + ": relative vertex index " + shown_token(reference) + " before the first vertex");
         polygon.push_back(std::size_t(resolved));
       }
       polygons.push_back(std::move(polygon));
