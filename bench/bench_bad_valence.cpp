@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Bad-valence removal benchmark in the layout of the thesis's Table 7.1: for
 // each mesh, the initial mesh's vertices and bad-valence counts (v2, v3 with
 // its border part, interior v4), the same after removal only (the thesis's

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Angle-bounded decimation benchmark (thesis, chapter 6 and Figures
 // 7.1-7.6): each input is remeshed as `remesh` does (init, valence, fit at
 // resolution N), then decimated into the levels 0.5 and 0.1 (50% and 90% of

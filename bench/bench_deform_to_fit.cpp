@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Deform-to-fit benchmark in the layout of the thesis's Table 7.2: for each
 // mesh and resolution, the fit's seconds, QP solves per second, and the
 // error reached by the default fit, without lazy evaluation and without

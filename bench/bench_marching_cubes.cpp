@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Benchmark of the initial mesh (nonobtuse Marching Cubes): seconds per
 // resolution on the given meshes, and on a closed mesh of about 75,000
 // triangles made by Loop subdivision of the first one. Not a test: run by

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Benchmark of the per-vertex QP: microseconds per solve of the fast
 // Goldfarb-Idnani path against CGAL's exact solver, on the feasible regions
 // F(v) (k = 2) of an initial mesh, with a smoothing objective pulled towards

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // What the guarantee costs: each input remeshed by our pipeline
 // (nonobtuse_remesh at resolution N) and by CGAL's isotropic_remeshing, its
 // target edge length tuned until its output has our vertex count (within

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Polyhedron demo plugin of the Nonobtuse_remeshing package: the submenu
 // "Polygon Mesh Processing/Nonobtuse Remeshing" with three actions on a
 // selected surface mesh item,
@@ -63,12 +65,7 @@ namespace {
 
 QString stage_name(NR::Remeshing_stage stage)
 {
-  switch(stage) {
-  case NR::Remeshing_stage::initial_mesh: return QStringLiteral("initial mesh (nonobtuse Marching Cubes)");
-  case NR::Remeshing_stage::valence: return QStringLiteral("bad-valence removal and vertex splits");
-  case NR::Remeshing_stage::fit: return QStringLiteral("deform-to-fit");
-  }
-  return QString();
+  return QString::fromLatin1(NR::stage_description(stage));
 }
 
 // Share of the progress bar of each stage: [begin, end) out of 1000.
@@ -195,18 +192,6 @@ QString certificate_summary(const NR::Angle_certificate<face_descriptor>& c)
   if(c.has_angles())
     text += QObject::tr("; angles from %1° to %2°").arg(c.min_angle, 0, 'f', 3).arg(c.max_angle, 0, 'f', 3);
   return text;
-}
-
-const char* stop_reason_name(NR::Decimation_stop_reason r)
-{
-  switch(r) {
-  case NR::Decimation_stop_reason::target_reached: return "target reached";
-  case NR::Decimation_stop_reason::max_error: return "maximum error reached";
-  case NR::Decimation_stop_reason::no_collapse_left: return "no collapse left";
-  case NR::Decimation_stop_reason::round_limit: return "round limit";
-  case NR::Decimation_stop_reason::cancelled: return "cancelled";
-  }
-  return "";
 }
 
 } // namespace
@@ -575,7 +560,7 @@ bool Polyhedron_demo_nonobtuse_remeshing_plugin::run_decimation(double ratio, do
                               .arg(qulonglong(num_vertices(mesh)))
                               .arg(qulonglong(stats.collapses))
                               .arg(stats.seconds, 0, 'f', 2)
-                              .arg(QString::fromLatin1(stop_reason_name(stats.stop_reason)))
+                              .arg(QString::fromLatin1(NR::stop_reason_name(stats.stop_reason)))
                               .arg(certificate_summary(certificate));
   const QString name = tr("%1 (decimated %2)").arg(input_name).arg(ratio);
   add_result(scene->item(input_id) == item ? item : nullptr, std::move(mesh), name, true);

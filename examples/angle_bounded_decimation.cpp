@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Stage 4 (thesis, chapter 6): angle-bounded decimation of a certified mesh
 // into a hierarchy of coarser meshes, every level certified in [30, 90]
 // degrees. Level i is written as OUTPUT_BASE_i.off.

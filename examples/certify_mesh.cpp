@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Reads a mesh, certifies its angles exactly in [30, 90] degrees and in a
 // user-chosen interval, and prints the quality report's topology summary.
 //

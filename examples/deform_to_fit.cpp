@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Stage 3 (thesis, chapter 5): deform-to-fit. Every vertex of the initial
 // mesh solves a small quadratic program over its linearized feasible region;
 // each move is certified exactly before it is applied, so the mesh stays in

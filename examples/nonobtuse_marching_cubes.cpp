@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Stage 1 (thesis, chapter 4): the initial mesh by nonobtuse Marching Cubes.
 // Its vertices lie at cube-edge midpoints and cube centres, so every angle
 // lies in [35.26, 90] degrees; the written file is certified on re-reading.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // The whole pipeline: any triangle mesh to a certified well-shaped nonobtuse
 // mesh of about V vertices, then two coarser levels of detail. A visitor
 // prints each stage and cancels the fit after a time budget; whatever

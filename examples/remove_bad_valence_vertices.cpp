@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Stage 2 (thesis, section 5.7): removal of bad-valence vertices from the
 // initial mesh, and vertex splits for those that removal cannot reach. The
 // counts before and after are the columns of the thesis's Table 7.1.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs the Debian packages the package, its tool and its tests need.
 set -euo pipefail
 SUDO=""

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Builds the Polyhedron demo plugin (demo/) against a build of CGAL's
 # Polyhedron demo and smoke-tests it under Xvfb; exits 0 only when the smoke
 # test passes.

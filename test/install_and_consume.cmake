@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # ctest script: install the package into a temporary prefix, build the
 # consumer project against it, and run it on a shipped mesh.
 file(REMOVE_RECURSE ${WORK_DIR})

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Angle pictures: the histogram agrees with the certificate, the SVG has a
 // band, one bar series per mesh whose percentages sum to 100 and the min and
 // max angles in its legend; the PLY coloured by angle reads back to the same
@@ -103,7 +105,7 @@ TEST(AnglePictures, HistogramAgreesWithTheCertificate)
     EXPECT_EQ(two.max_angle, certificate.max_angle);
   }
   EXPECT_GE(NR::angle_histogram(remeshed_sphere(), "mc").min_angle, 35.26);
-  EXPECT_THROW(NR::angle_histogram(sphere(), "bad", 7), std::invalid_argument);
+  EXPECT_THROW(NR::angle_histogram(sphere(), "bad", 7), NR::Bad_parameter);
 }
 
 TEST(AnglePictures, SvgHasTheBandOneSeriesPerMeshAndTheExtremes)

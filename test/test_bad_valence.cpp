@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Removal of bad-valence vertices (thesis, section 5.7) and vertex split:
 // hand-built one-rings for the cases of the thesis's Figure 5.6 and for the
 // split, then the initial meshes of the shipped samples, re-read from the
@@ -246,11 +248,11 @@ TEST(BadValence, VertexSplitRaisesAWing)
 TEST(BadValence, RefusesAnUncertifiedMesh)
 {
   Mesh mesh = make_mesh({{0, 0, 0}, {1, 0, 0}, {3, 1, 0}}, {{0, 1, 2}});
-  EXPECT_THROW(NR::remove_bad_valence_vertices(mesh), std::invalid_argument);
+  EXPECT_THROW(NR::remove_bad_valence_vertices(mesh), NR::Bad_input);
   EXPECT_EQ(num_faces(mesh), 1u);
   Mesh certified = make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
   EXPECT_THROW(NR::remove_bad_valence_vertices(certified, NR::parameters::drum_subdivisions(0)),
-               std::invalid_argument);
+               NR::Bad_parameter);
 }
 
 // The initial meshes of the shipped samples at N = 40: the result, re-read

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Angle-bounded decimation (thesis, chapter 6): the quadrics, the placement
 // QP against CGAL's solver, a flat hand-built patch, and the fitted meshes of
 // shipped samples decimated into a hierarchy whose every level, re-read from
@@ -270,14 +272,14 @@ TEST(Decimation, RefusesBadRequestsAndLeavesTheMeshAlone)
 {
   Mesh raw = nonobtuse_test::load("pig.off");  // not nonobtuse
   const std::size_t n = vertices(raw).size();
-  EXPECT_THROW(NR::angle_bounded_decimation(raw), std::invalid_argument);
+  EXPECT_THROW(NR::angle_bounded_decimation(raw), NR::Bad_input);
   EXPECT_EQ(vertices(raw).size(), n);
   Mesh flat = triangular_grid(4, 4);
   const std::size_t m = vertices(flat).size();
-  EXPECT_THROW(NR::angle_bounded_decimation(flat, NR::parameters::vertex_ratio(0.)), std::invalid_argument);
-  EXPECT_THROW(NR::angle_bounded_decimation(flat, NR::parameters::max_error(-1.)), std::invalid_argument);
-  EXPECT_THROW(NR::angle_bounded_decimation(flat, NR::parameters::drum_subdivisions(0)), std::invalid_argument);
-  EXPECT_THROW(NR::angle_bounded_decimation_hierarchy(flat, {0.1, 0.5}), std::invalid_argument);
-  EXPECT_THROW(NR::angle_bounded_decimation_hierarchy(flat, {1.}), std::invalid_argument);
+  EXPECT_THROW(NR::angle_bounded_decimation(flat, NR::parameters::vertex_ratio(0.)), NR::Bad_parameter);
+  EXPECT_THROW(NR::angle_bounded_decimation(flat, NR::parameters::max_error(-1.)), NR::Bad_parameter);
+  EXPECT_THROW(NR::angle_bounded_decimation(flat, NR::parameters::drum_subdivisions(0)), NR::Bad_parameter);
+  EXPECT_THROW(NR::angle_bounded_decimation_hierarchy(flat, {0.1, 0.5}), NR::Bad_parameter);
+  EXPECT_THROW(NR::angle_bounded_decimation_hierarchy(flat, {1.}), NR::Bad_parameter);
   EXPECT_EQ(vertices(flat).size(), m);
 }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Deform-to-fit building blocks: the linearized feasible region F(v) is
 // conservative (points strictly inside give exactly certified triangles),
 // contains the initial meshes' vertices, and is not needlessly small; the

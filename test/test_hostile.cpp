@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Hostile inputs: files that lie about their sizes, outputs that name each
 // other, signals during the write, memory a resolution would exhaust, files
 // that only look certified; a fuzz test of the readers; and `certify` against

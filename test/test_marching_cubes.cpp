@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Nonobtuse Marching Cubes: the generated table checked exhaustively and
 // exactly, phase 1 against brute force, and whole meshes at several
 // resolutions, certified on the re-read file.
@@ -229,7 +231,7 @@ TEST(MarchingCubes, MeshCubeIntersectionMatchesBruteForce)
     for(int resolution : {7, 16}) {
       const Mesh mesh = load(name);
       const NR::internal::Grid grid = grid_of(mesh, resolution);
-      const NR::internal::Input_triangles in = NR::internal::input_triangles(mesh);
+      const NR::internal::Input_triangles in = NR::internal::input_triangles(mesh, get(CGAL::vertex_point, mesh));
       const std::vector<bool> usable(in.triangles.size(), true);
       NR::internal::Cube_triangles cubes;
       ASSERT_TRUE(NR::internal::mesh_cube_intersection(grid, in.triangles, usable, std::size_t(-1), cubes));
@@ -397,7 +399,7 @@ TEST(MarchingCubes, InsideTestAndPatchesAgreeOnClosedInputs)
   }
   Mesh open = load("pig.off"), out;
   EXPECT_THROW(NR::nonobtuse_marching_cubes(open, out, NR::parameters::sign_source(NR::Sign_source::inside_test)),
-               std::invalid_argument);
+               NR::Bad_input);
 }
 
 TEST(MarchingCubes, OrientedLikeTheInput)

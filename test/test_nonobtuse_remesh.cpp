@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // The whole pipeline, nonobtuse_remesh(): the same mesh as its stages run by
 // hand, a resolution chosen for a vertex count, the visitor's stages and
 // cancellation (certified on the written file either way), and refusals that
@@ -148,18 +150,18 @@ TEST(NonobtuseRemesh, Refusals)
 {
   const Mesh input = nonobtuse_test::load("sphere.off");
   Mesh output = input;
-  EXPECT_THROW(NR::nonobtuse_remesh(input, output, NR::parameters::alpha(2.)), std::invalid_argument);
+  EXPECT_THROW(NR::nonobtuse_remesh(input, output, NR::parameters::alpha(2.)), NR::Bad_parameter);
   EXPECT_EQ(num_faces(output), 0u);
   output = input;
-  EXPECT_THROW(NR::nonobtuse_remesh(input, output, NR::parameters::resolution(0)), std::invalid_argument);
+  EXPECT_THROW(NR::nonobtuse_remesh(input, output, NR::parameters::resolution(0)), NR::Bad_parameter);
   EXPECT_EQ(num_faces(output), 0u);
   EXPECT_THROW(NR::nonobtuse_remesh(input, output,
                                     NR::parameters::combine(NR::parameters::valence_cleanup(false),
                                                             NR::parameters::stop_after(NR::Remeshing_stage::valence))),
-               std::invalid_argument);
-  EXPECT_THROW(NR::nonobtuse_remesh(Mesh(), output), std::invalid_argument);
+               NR::Bad_parameter);
+  EXPECT_THROW(NR::nonobtuse_remesh(Mesh(), output), NR::Bad_input);
   // too coarse a grid for the input: an empty initial mesh is refused
-  EXPECT_THROW(NR::nonobtuse_remesh(input, output, NR::parameters::resolution(1)), std::invalid_argument);
+  EXPECT_THROW(NR::nonobtuse_remesh(input, output, NR::parameters::resolution(1)), NR::Bad_input);
   EXPECT_EQ(num_faces(output), 0u);
 }
 

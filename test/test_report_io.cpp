@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Quality report fields against values computed independently, and the
 // checked reader / atomic writer.
 
@@ -212,7 +214,7 @@ TEST(QualityReport, SelfIntersectionsAndTheirCap)
   EXPECT_EQ(exact.self_intersections, all.self_intersections);
   EXPECT_FALSE(exact.self_intersections_capped);
   EXPECT_THROW(NR::quality_report(two, nullptr, NR::parameters::maximum_self_intersections(std::size_t(0))),
-               std::invalid_argument);
+               NR::Bad_parameter);
 }
 
 TEST(QualityReport, NonManifoldVertexIsCounted)

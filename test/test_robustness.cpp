@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Robustness corpus: inputs of the kinds users really have (self-intersecting
 // scans, dozens of components, genus above 100, needle and zero-area
 // triangles, polygon soups, non-manifold vertices and edges, garbage) get

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Helpers shared by the library tests: the shipped sample meshes.
 
 #ifndef NONOBTUSE_TEST_SUPPORT_H

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Links the installed package: certifies a mesh and prints its verdict.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

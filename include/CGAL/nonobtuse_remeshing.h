@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Umbrella header of the Nonobtuse_remeshing package: remeshing of triangulated
 // surfaces into meshes whose angles all lie in [30, 90] degrees, certified
 // exactly (after Li, "Nonobtuse meshes with guaranteed angle bounds").
@@ -23,6 +25,8 @@
 /// the pictures. The user manual is the main page.
 
 #include <CGAL/Nonobtuse_remeshing/parameters.h>
+#include <CGAL/Nonobtuse_remeshing/exceptions.h>
+#include <CGAL/Nonobtuse_remeshing/statistics.h>
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
 #include <CGAL/Nonobtuse_remeshing/quality_report.h>
 #include <CGAL/Nonobtuse_remeshing/mesh_io.h>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // nonobtuse-remesh certify MESH [--min-angle 30] [--max-angle 90]
 
 #include "cli.h"

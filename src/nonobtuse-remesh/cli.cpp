@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 #include "cli.h"
 
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
@@ -169,6 +171,9 @@ int run_guarded(const std::string& name, const std::function<int()>& body)
       for(const std::string& note : pending_notes) std::cerr << note << "\n";
     pending_notes.clear();
     return code;
+  } catch(const NR::Bad_parameter& e) {
+    std::cerr << "nonobtuse-remesh " << name << ": usage error: " << e.what() << after_repairs() << "\n";
+    return usage_error;
   } catch(const NR::Bad_input& e) {
     std::cerr << "nonobtuse-remesh " << name << ": bad input: " << e.what() << after_repairs() << "\n";
     return bad_input;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Shared pieces of the nonobtuse-remesh subcommands: exit codes, the mesh
 // type, checked loading with its messages, and the error-to-exit-code policy.
 

@@ -1,8 +1,11 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // nonobtuse-remesh decimate INPUT -o OUTPUT (--ratio R | --target-vertices V)
 //                  [--max-error PCT] [--min-valence V] [--json FILE]
 // and the decimation pieces `remesh --lod` shares.
 
 #include "decimation_cli.h"
+#include "statistics_output.h"
 
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
 #include <CGAL/Nonobtuse_remeshing/mesh_io.h>
@@ -68,20 +71,28 @@ void Decimation_settings::add_options(po::options_description& options)
 void Decimation_settings::check(const po::variables_map& vm)
 {
   relaxation = vm.count("no-relaxation") == 0;
-  if(vm.count("max-error") && !(max_error_percent > 0. && max_error_percent <= 100.))
-    throw std::invalid_argument("--max-error must lie in (0, 100] (a percentage of the diagonal)");
-  if(min_valence < 3 || min_valence > 12) throw std::invalid_argument("--min-valence must lie in [3, 12]");
-  if(vm.count("min-border-valence") && (min_border_valence < 2 || min_border_valence > 12))
-    throw std::invalid_argument("--min-border-valence must lie in [2, 12]");
+  if(vm.count("max-error") && !(max_error_percent > 0.))  // 0 stands for none below
+    throw NR::Bad_parameter("--max-error must be positive (a percentage of the diagonal)");
 }
 
-NR::Angle_bounded_decimation_statistics decimate(Mesh& mesh, std::size_t target, const Decimation_settings& settings)
+void Decimation_settings::check_parameters(const std::vector<double>& ratios) const
+{
+  Decimation_progress progress;
+  NR::internal::decimation_options(decimation_parameters(*this, progress));
+  if(!ratios.empty()) NR::internal::check_level_ratios(ratios);
+}
+
+NR::Angle_bounded_decimation_statistics decimate(Mesh& mesh, std::optional<double> ratio, std::size_t target,
+                                                 const Decimation_settings& settings)
 {
   Decimation_progress progress;
   progress.line.quiet = settings.quiet;
-  progress.last_target = target;
-  const auto s = NR::angle_bounded_decimation(
-      mesh, NR::parameters::combine(NR::parameters::target_vertices(target), decimation_parameters(settings, progress)));
+  progress.last_target = ratio ? std::size_t(std::llround(*ratio * double(vertices(mesh).size()))) : target;
+  const auto s =
+      ratio ? NR::angle_bounded_decimation(mesh, NR::parameters::combine(NR::parameters::vertex_ratio(*ratio),
+                                                                         decimation_parameters(settings, progress)))
+            : NR::angle_bounded_decimation(mesh, NR::parameters::combine(NR::parameters::target_vertices(target),
+                                                                         decimation_parameters(settings, progress)));
   progress.line.done();
   mesh.collect_garbage();
   return s;
@@ -117,9 +128,6 @@ std::vector<double> parse_ratios(const std::string& text)
     ratios.push_back(r);
   }
   if(ratios.empty()) throw std::invalid_argument("--lod needs at least one ratio");
-  for(std::size_t i = 0; i < ratios.size(); ++i)
-    if(!(ratios[i] > 0. && ratios[i] < 1.) || (i > 0 && !(ratios[i] < ratios[i - 1])))
-      throw std::invalid_argument("the --lod ratios must decrease strictly within (0, 1) (got '" + text + "')");
   return ratios;
 }
 
@@ -132,54 +140,9 @@ std::string level_path(const std::string& output, std::size_t i)
   return output.substr(0, cut) + "_lod" + std::to_string(i) + output.substr(cut);
 }
 
-const char* stop_reason_name(NR::Decimation_stop_reason reason)
-{
-  switch(reason) {
-  case NR::Decimation_stop_reason::target_reached: return "target reached";
-  case NR::Decimation_stop_reason::max_error: return "stopped at --max-error";
-  case NR::Decimation_stop_reason::no_collapse_left: return "no certified collapse left";
-  case NR::Decimation_stop_reason::round_limit: return "64 rounds ran";
-  case NR::Decimation_stop_reason::cancelled: return "cancelled";
-  }
-  return "unknown";
-}
-
 void print_decimation(std::ostream& out, const NR::Angle_bounded_decimation_statistics& s)
 {
-  out << std::setprecision(4) << "decimation (angle-bounded, " << s.vertices_before << " -> " << s.vertices_after
-      << " vertices, target " << s.target_vertices << "): " << stop_reason_name(s.stop_reason) << "\n"
-      << "  collapses " << s.collapses << ", QP solves " << s.qp_solves << ", fallbacks to CGAL's QP solver "
-      << s.qp_fallbacks << ", rounds " << s.rounds << ", relaxations " << s.relaxations << " ("
-      << s.relaxation_moves << " moves, " << s.relaxation_seconds << " s)\n"
-      << "  refused: empty F(u, v) " << s.empty_regions << ", valence floor " << s.valence_refusals
-      << ", exact certification " << s.certification_refusals << ", topology " << s.topology_refusals << "\n"
-      << "  largest collapse error " << 100. * s.largest_collapse_error << "% of the diagonal";
-  if(s.stop_reason == NR::Decimation_stop_reason::max_error)
-    out << ", cheapest collapse left " << 100. * s.stopping_error << "%";
-  out << ", " << s.seconds << " s\n";
-}
-
-json decimation_json(const NR::Angle_bounded_decimation_statistics& s)
-{
-  return {{"vertices_before", s.vertices_before},
-          {"vertices_after", s.vertices_after},
-          {"target_vertices", s.target_vertices},
-          {"stop_reason", stop_reason_name(s.stop_reason)},
-          {"target_reached", s.stop_reason == NR::Decimation_stop_reason::target_reached},
-          {"collapses", s.collapses},
-          {"qp_solves", s.qp_solves},
-          {"qp_fallbacks", s.qp_fallbacks},
-          {"empty_regions", s.empty_regions},
-          {"valence_refusals", s.valence_refusals},
-          {"certification_refusals", s.certification_refusals},
-          {"topology_refusals", s.topology_refusals},
-          {"rounds", s.rounds},
-          {"relaxations", s.relaxations},
-          {"relaxation_moves", s.relaxation_moves},
-          {"relaxation_seconds", s.relaxation_seconds},
-          {"largest_collapse_error_percent", 100. * s.largest_collapse_error},
-          {"stopping_error_percent", 100. * s.stopping_error},
-          {"seconds", s.seconds}};
+  print_fields(out, "decimation (angle-bounded edge collapses)", s);
 }
 
 int decimate_command(int argc, char** argv)
@@ -215,12 +178,10 @@ int decimate_command(int argc, char** argv)
   return run_guarded("decimate", [&]() {
     if(vm.count("ratio") == vm.count("target-vertices"))
       throw std::invalid_argument("give one of --ratio and --target-vertices");
-    if(vm.count("ratio") && !(ratio > 0. && ratio <= 1.)) throw std::invalid_argument("--ratio must lie in (0, 1]");
     if(vm.count("target-vertices") && target_vertices < 0)
       throw std::invalid_argument("--target-vertices must be at least 0");
-    if(settings.drum_subdivisions < 1 || settings.drum_subdivisions > 16)
-      throw std::invalid_argument("--drum-subdivisions must lie in [1, 16]");
     settings.check(vm);
+    settings.check_parameters({});
     check_paths({{"INPUT", input_path}}, {{"-o", output_path}, {"--json", json_path}});
     if(!NR::internal::is_mesh_extension(NR::internal::file_extension(output_path)))
       throw NR::Output_error("cannot write '" + output_path + "': unsupported extension (expected .off, .obj, .ply or .stl)");
@@ -240,11 +201,11 @@ int decimate_command(int argc, char** argv)
                 << " degenerate faces); decimate needs a nonobtuse mesh, such as the output of remesh\n";
       return int(certification_failed);
     }
-    const std::size_t n = vertices(input).size();
-    const std::size_t target =
-        vm.count("ratio") ? std::size_t(std::llround(ratio * double(n))) : std::size_t(target_vertices);
     Mesh output = input;
-    const NR::Angle_bounded_decimation_statistics s = decimate(output, target, settings);
+    const NR::Angle_bounded_decimation_statistics s =
+        decimate(output, vm.count("ratio") ? std::optional<double>(ratio) : std::nullopt,
+                 std::size_t(target_vertices), settings);
+    const std::size_t target = s.target_vertices;
     print_decimation(std::cout, s);
 
     std::size_t written_faces = 0;
@@ -257,13 +218,13 @@ int decimate_command(int argc, char** argv)
               << " faces, certified in [30, 90] degrees on the written file; Hausdorff distance to the input "
               << std::setprecision(4) << report.distance->hausdorff_symmetric << "% of its diagonal\n";
     if(s.stop_reason != NR::Decimation_stop_reason::target_reached)
-      std::cout << "note: the target of " << target << " vertices was not reached: " << stop_reason_name(s.stop_reason)
+      std::cout << "note: the target of " << target << " vertices was not reached: " << NR::stop_reason_name(s.stop_reason)
                 << "\n";
     if(!json_path.empty()) {
       json j;
       j["input"] = input_path;
       j["output"] = output_path;
-      j["decimation"] = decimation_json(s);
+      j["decimation"] = fields_json(s);
       j["output_report"] = report_to_json(output_path, report, {});
       write_json_atomically(json_path, j);
     }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Angle-bounded decimation in the tool: the options `decimate` and
 // `remesh --lod` share, the statistics as text and JSON, and the levels of
 // detail of `remesh`.
@@ -11,6 +13,7 @@
 #include <CGAL/Nonobtuse_remeshing/angle_bounded_decimation.h>
 
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,28 +31,31 @@ struct Decimation_settings
 
   // --max-error, --min-valence, --min-border-valence, --no-relaxation
   void add_options(po::options_description& options);
-  // Reads the switches and checks the values; throws std::invalid_argument.
+  // Reads the switches.
   void check(const po::variables_map& vm);
+  // The library's checks of these settings and of the levels' `ratios`
+  // (none if empty), before any work: throws Bad_parameter.
+  void check_parameters(const std::vector<double>& ratios) const;
 };
 
-// Decimates `mesh` in place to `target` vertices.
-CGAL::Nonobtuse_remeshing::Angle_bounded_decimation_statistics decimate(Mesh& mesh, std::size_t target,
+// Decimates `mesh` in place to `ratio` of its vertices if given, else to
+// `target` vertices.
+CGAL::Nonobtuse_remeshing::Angle_bounded_decimation_statistics decimate(Mesh& mesh, std::optional<double> ratio,
+                                                                        std::size_t target,
                                                                         const Decimation_settings& settings);
 
 // The hierarchy of `full` at `ratios`, one decimation.
 std::vector<CGAL::Nonobtuse_remeshing::Decimation_level<Mesh> > decimation_levels(
     const Mesh& full, const std::vector<double>& ratios, const Decimation_settings& settings);
 
-// "0.5,0.1" -> {0.5, 0.1}; throws std::invalid_argument unless the ratios
-// decrease strictly within (0, 1).
+// "0.5,0.1" -> {0.5, 0.1}; throws std::invalid_argument unless the text is
+// a list of numbers.
 std::vector<double> parse_ratios(const std::string& text);
 
 // The file of level i (from 1) of `output`: "dir/name.off" -> "dir/name_lod1.off".
 std::string level_path(const std::string& output, std::size_t i);
 
-const char* stop_reason_name(CGAL::Nonobtuse_remeshing::Decimation_stop_reason reason);
 void print_decimation(std::ostream& out, const CGAL::Nonobtuse_remeshing::Angle_bounded_decimation_statistics& s);
-json decimation_json(const CGAL::Nonobtuse_remeshing::Angle_bounded_decimation_statistics& s);
 
 } // namespace nonobtuse_cli
 

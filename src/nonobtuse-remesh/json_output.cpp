@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 #include "json_output.h"
 
 #include <CGAL/Nonobtuse_remeshing/mesh_io.h>

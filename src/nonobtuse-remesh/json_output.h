@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // JSON output of the tool: the quality report as JSON, written atomically.
 
 #ifndef NONOBTUSE_REMESH_JSON_OUTPUT_H

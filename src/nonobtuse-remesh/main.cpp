@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // nonobtuse-remesh: command-line front end of the Nonobtuse_remeshing package.
 // Each subcommand is a small file of its own over the library.
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // nonobtuse-remesh remesh INPUT -o OUTPUT [--resolution N | --target-vertices V]
 //                  [--stop-after init|valence|fit] [--signs patches|inside-test] [stage options]
 //                  [--lod R,R...] [--report FILE.json] [--angle-histogram FILE.svg]
@@ -6,6 +8,7 @@
 #include "cli.h"
 #include "decimation_cli.h"
 #include "json_output.h"
+#include "statistics_output.h"
 
 #include <CGAL/Nonobtuse_remeshing/angle_pictures.h>
 #include <CGAL/Nonobtuse_remeshing/mesh_io.h>
@@ -26,137 +29,21 @@ namespace NR = CGAL::Nonobtuse_remeshing;
 
 namespace {
 
-json initial_mesh_json(const NR::Marching_cubes_result& r)
-{
-  return {{"resolution", r.resolution},
-          {"cube_size", r.cube_size},
-          {"input_triangles", r.input_triangles},
-          {"degenerate_input_triangles", r.degenerate_input_triangles},
-          {"cubes_intersected", r.cubes_intersected},
-          {"cubes_with_several_patches", r.cubes_with_several_patches},
-          {"patches", r.patches},
-          {"patches_ignored", r.patches_ignored},
-          {"cube_faces_stitched", r.faces_stitched},
-          {"welds_refused", r.welds_refused},
-          {"non_manifold_faces_removed", r.non_manifold_faces_removed},
-          {"islands_removed", r.islands_removed},
-          {"vertices_out", r.vertices_out},
-          {"triangles_out", r.triangles_out},
-          {"borders_out", r.borders_out},
-          {"components_out", r.components_out},
-          {"valence_range", {r.min_valence, r.max_valence}},
-          {"angle_range", {r.min_angle, r.max_angle}},
-          {"seconds", r.seconds}};
-}
-
 void print_initial_mesh(std::ostream& out, const NR::Marching_cubes_result& r)
 {
-  out << std::setprecision(6) << "init (nonobtuse Marching Cubes, N = " << r.resolution
-      << ", cube size " << r.cube_size << "):\n"
-      << "  triangles out " << r.triangles_out << ", vertices out " << r.vertices_out << ", borders out "
-      << r.borders_out << ", components out " << r.components_out << "\n"
-      << "  cubes intersected " << r.cubes_intersected << ", with several patches "
-      << r.cubes_with_several_patches << ", patches " << r.patches << ", ignored " << r.patches_ignored
-      << "\n"
-      << "  cube faces stitched " << r.faces_stitched << ", welds refused " << r.welds_refused
-      << ", non-manifold faces removed " << r.non_manifold_faces_removed << ", islands removed "
-      << r.islands_removed << "\n"
-      << "  valence range [" << r.min_valence << ", " << r.max_valence << "], angle range ["
-      << std::setprecision(10) << r.min_angle << ", " << r.max_angle << "], " << std::setprecision(3)
-      << r.seconds << " s\n";
+  print_fields(out, std::string("init (") + NR::stage_description(NR::Remeshing_stage::initial_mesh) + ")", r);
   if(r.degenerate_input_triangles > 0)
     out << "  note: " << r.degenerate_input_triangles << " degenerate input triangle(s) ignored\n";
 }
 
-json valence_counts_json(const NR::Valence_counts& c)
-{
-  return {{"v2", c.valence_2},
-          {"v3", c.valence_3()},
-          {"v3_border", c.border_valence_3},
-          {"v3_interior", c.interior_valence_3},
-          {"int_v4", c.interior_valence_4},
-          {"int_above_11", c.interior_valence_above_11},
-          {"total", c.total()}};
-}
-
-json valence_json(const NR::Bad_valence_removal_statistics& s)
-{
-  return {{"before", valence_counts_json(s.before)},
-          {"after", valence_counts_json(s.after)},
-          {"vertices_before", s.vertices_before},
-          {"vertices_after", s.vertices_after},
-          {"border_valence_2_discarded", s.border_valence_2_discarded},
-          {"interior_valence_3_discarded", s.interior_valence_3_discarded},
-          {"interior_valence_4_discarded", s.interior_valence_4_discarded},
-          {"interior_valence_4_collapsed", s.interior_valence_4_collapsed},
-          {"border_valence_3_discarded", s.border_valence_3_discarded},
-          {"border_valence_3_collapsed", s.border_valence_3_collapsed},
-          {"border_teeth_removed", s.border_teeth_removed},
-          {"splits", s.splits},
-          {"refused_by_certification", s.refused},
-          {"rounds", s.rounds},
-          {"seconds", s.seconds}};
-}
-
 void print_valence(std::ostream& out, const NR::Bad_valence_removal_statistics& s)
 {
-  auto counts = [](const NR::Valence_counts& c) {
-    return "v2 " + std::to_string(c.valence_2) + ", v3 " + std::to_string(c.valence_3()) + " (border " +
-           std::to_string(c.border_valence_3) + "), int-v4 " + std::to_string(c.interior_valence_4) +
-           ", int-v12+ " + std::to_string(c.interior_valence_above_11);
-  };
-  out << std::setprecision(3) << "valence (bad-valence removal and vertex split, " << s.vertices_before << " -> "
-      << s.vertices_after << " vertices):\n"
-      << "  before: " << counts(s.before) << "\n"
-      << "  after:  " << counts(s.after) << "\n"
-      << "  discarded: border v2 " << s.border_valence_2_discarded << ", interior v3 "
-      << s.interior_valence_3_discarded << ", interior v4 " << s.interior_valence_4_discarded << ", border v3 "
-      << s.border_valence_3_discarded << "; collapsed: interior v4 " << s.interior_valence_4_collapsed
-      << ", border v3 " << s.border_valence_3_collapsed << "; border teeth " << s.border_teeth_removed
-      << "; splits " << s.splits << "\n"
-      << "  refused by the exact certification " << s.refused << ", rounds " << s.rounds << ", " << s.seconds
-      << " s\n";
-}
-
-json fit_json(const NR::Deform_to_fit_statistics& s)
-{
-  return {{"vertices", s.vertices},
-          {"feature_samples", s.feature_samples},
-          {"moves", s.moves},
-          {"smoothing_moves", s.smoothing_moves},
-          {"qp_solves", s.qp_solves},
-          {"qp_fallbacks", s.qp_fallbacks},
-          {"infeasible_regions", s.infeasible_regions},
-          {"shortened_moves", s.shortened_moves},
-          {"rejected_moves", s.rejected_moves},
-          {"undone_moves", s.undone_moves},
-          {"full_updates", s.full_updates},
-          {"smoothing_passes", s.smoothing_passes},
-          {"intersecting_pairs_found", s.intersecting_pairs_found},
-          {"untangling_moves", s.untangling_moves},
-          {"intersecting_pairs", s.intersecting_pairs},
-          {"rms_vertex_distance_percent", s.rms_distance},
-          {"budget_exhausted", s.budget_exhausted},
-          {"optimization_seconds", s.optimization_seconds},
-          {"smoothing_seconds", s.smoothing_seconds},
-          {"untangling_seconds", s.untangling_seconds},
-          {"seconds", s.seconds}};
+  print_fields(out, std::string("valence (") + NR::stage_description(NR::Remeshing_stage::valence) + ")", s);
 }
 
 void print_fit(std::ostream& out, const NR::Deform_to_fit_statistics& s)
 {
-  out << std::setprecision(4) << "fit (deform-to-fit, " << s.vertices << " vertices, " << s.feature_samples
-      << " feature samples):\n"
-      << "  moves " << s.moves << " (smoothing " << s.smoothing_moves << "), QP solves " << s.qp_solves
-      << ", fallbacks to CGAL's QP solver " << s.qp_fallbacks << ", empty regions " << s.infeasible_regions << "\n"
-      << "  shortened moves " << s.shortened_moves << ", rejected " << s.rejected_moves << ", undone "
-      << s.undone_moves << ", full updates " << s.full_updates << ", smoothing passes " << s.smoothing_passes
-      << "\n"
-      << "  self-intersecting face pairs " << s.intersecting_pairs_found << " after the fit, "
-      << s.intersecting_pairs << " after " << s.untangling_moves << " untangling moves\n"
-      << "  rms vertex distance " << s.rms_distance << "% of the diagonal, optimization "
-      << s.optimization_seconds << " s, smoothing " << s.smoothing_seconds << " s, untangling "
-      << s.untangling_seconds << " s, total " << s.seconds << " s\n";
+  print_fields(out, std::string("fit (") + NR::stage_description(NR::Remeshing_stage::fit) + ")", s);
   if(s.budget_exhausted) out << "  note: the budget ran out before the fit converged\n";
 }
 
@@ -206,16 +93,6 @@ json table_7_2_json(const NR::Quality_report& input, const NR::Quality_report& o
           {"epsilon_percent", output.distance ? json(output.distance->hausdorff_symmetric) : json(nullptr)}};
 }
 
-const char* stage_name(NR::Remeshing_stage stage)
-{
-  switch(stage) {
-  case NR::Remeshing_stage::initial_mesh: return "init";
-  case NR::Remeshing_stage::valence: return "valence";
-  case NR::Remeshing_stage::fit: return "fit";
-  }
-  return "";
-}
-
 // One progress line per stage, "[i/n] stage ...": a bar where the stage's
 // fraction is known, the fit's moves and distance where it is not.
 struct Pipeline_progress
@@ -228,12 +105,12 @@ struct Pipeline_progress
   void stage_started(NR::Remeshing_stage stage)
   {
     ++index;
-    line.show(prefix() + stage_name(stage) + " " + Progress_line::bar(0.), true);
+    line.show(prefix() + NR::stage_name(stage) + " " + Progress_line::bar(0.), true);
   }
   void stage_finished(NR::Remeshing_stage stage, double seconds)
   {
     std::ostringstream text;
-    text << prefix() << stage_name(stage) << " " << Progress_line::bar(1.) << " done in " << std::setprecision(3)
+    text << prefix() << NR::stage_name(stage) << " " << Progress_line::bar(1.) << " done in " << std::setprecision(3)
          << seconds << " s";
     line.show(text.str(), true);
     line.done();
@@ -330,25 +207,11 @@ int remesh_command(int argc, char** argv)
     const auto seconds_since = [](Clock::time_point t) {
       return std::chrono::duration<double>(Clock::now() - t).count();
     };
-    if(stop_after != "init" && stop_after != "valence" && stop_after != "fit")
-      throw std::invalid_argument("--stop-after must be one of: init, valence, fit (got '" + stop_after + "')");
+    const NR::Remeshing_stage last = NR::stage_from_name(stop_after);
     const bool valence_cleanup = vm.count("no-valence-cleanup") == 0;
-    if(stop_after == "valence" && !valence_cleanup)
-      throw std::invalid_argument("--stop-after valence contradicts --no-valence-cleanup");
-    if(!(alpha >= 0. && alpha <= 1.)) throw std::invalid_argument("--alpha must lie in [0, 1]");
-    if(drum_subdivisions < 1 || drum_subdivisions > 16)
-      throw std::invalid_argument("--drum-subdivisions must lie in [1, 16]");
-    if(quadric_rings < 0 || quadric_rings > 4) throw std::invalid_argument("--quadric-rings must lie in [0, 4]");
-    if(smoothing_steps < 0 || smoothing_steps > 100)
-      throw std::invalid_argument("--smoothing-steps must lie in [0, 100]");
-    if(!(fit_tolerance > 0. && fit_tolerance < 1.)) throw std::invalid_argument("--fit-tolerance must lie in (0, 1)");
-    if(vm.count("max-seconds") && !(max_seconds >= 0.)) throw std::invalid_argument("--max-seconds must be at least 0");
     if(vm.count("max-moves") && max_moves < 0) throw std::invalid_argument("--max-moves must be at least 0");
     if(signs != "patches" && signs != "inside-test")
       throw std::invalid_argument("--signs must be patches or inside-test (got '" + signs + "')");
-    if(!(memory_limit > 0. && memory_limit <= 1e6)) throw std::invalid_argument("--memory-limit must lie in (0, 1e6] GiB");
-    if(resolution < 1 || resolution > 1024)
-      throw std::invalid_argument("--resolution must be between 1 and 1024");
     if(vm.count("target-vertices") && !vm["resolution"].defaulted())
       throw std::invalid_argument("give one of --resolution and --target-vertices");
     if(vm.count("target-vertices") && (target_vertices < 4 || target_vertices > 100000000))
@@ -367,7 +230,9 @@ int remesh_command(int argc, char** argv)
     decimation.quiet = quiet;
     decimation.drum_subdivisions = drum_subdivisions;
     const std::vector<double> ratios = lod.empty() ? std::vector<double>() : parse_ratios(lod);
-    if(!ratios.empty() && stop_after != "fit") throw std::invalid_argument("--lod needs the whole pipeline (no --stop-after)");
+    if(!ratios.empty()) decimation.check_parameters(ratios);
+    if(!ratios.empty() && last != NR::Remeshing_stage::fit)
+      throw std::invalid_argument("--lod needs the whole pipeline (no --stop-after)");
     std::vector<Named_path> outputs{{"-o", output_path},
                                     {vm.count("json") ? "--json" : "--report", report_path},
                                     {"--angle-histogram", histogram_path}};
@@ -379,11 +244,6 @@ int remesh_command(int argc, char** argv)
 
     const Mesh input = load_mesh(input_path);
     const NR::Sign_source source = signs == "patches" ? NR::Sign_source::patches : NR::Sign_source::inside_test;
-    if(source == NR::Sign_source::inside_test && !CGAL::is_closed(input))
-      throw NR::Bad_input("--signs inside-test needs a closed input, and '" + input_path + "' has borders");
-    const NR::Remeshing_stage last = stop_after == "init"      ? NR::Remeshing_stage::initial_mesh
-                                     : stop_after == "valence" ? NR::Remeshing_stage::valence
-                                                               : NR::Remeshing_stage::fit;
     Pipeline_progress progress;
     progress.line.quiet = quiet;
     progress.stages = 1 + int(last != NR::Remeshing_stage::initial_mesh && valence_cleanup) +
@@ -412,7 +272,7 @@ int remesh_command(int argc, char** argv)
               NR::parameters::memory_budget(memory_limit * 1024. * 1024. * 1024.)));
     } catch(const NR::Memory_budget_exceeded& e) {
       throw NR::Bad_input("'" + input_path + "': " + e.what() + " (--memory-limit, in GiB)");
-    } catch(const std::invalid_argument& e) {  // the arguments were checked: it is the input
+    } catch(const NR::Bad_input& e) {
       throw NR::Bad_input("'" + input_path + "': " + e.what());
     }
     if(stats.trial_resolution > 0)
@@ -472,12 +332,12 @@ int remesh_command(int argc, char** argv)
                   << std::setprecision(4) << report.distance->hausdorff_symmetric << "% of its diagonal\n";
         if(!level.reached)
           std::cout << "note: level " << i + 1 << " did not reach its target: "
-                    << stop_reason_name(level.statistics.stop_reason) << "; the levels after it are not written\n";
+                    << NR::stop_reason_name(level.statistics.stop_reason) << "; the levels after it are not written\n";
         json l;
         l["ratio"] = ratios[i];
         l["output"] = path;
         l["reached"] = level.reached;
-        l["decimation"] = decimation_json(level.statistics);
+        l["decimation"] = fields_json(level.statistics);
         l["report_against_full_resolution"] = report_to_json(path, report, {});
         levels_json.push_back(l);
       }
@@ -514,14 +374,14 @@ int remesh_command(int argc, char** argv)
       if(stats.fit_run)
         j["table_7_2"] = table_7_2_json(input_report, report, stats.fit, vm.count("no-lazy-evaluation") == 0,
                                         vm.count("no-early-smoothing") == 0);
-      j["init"] = initial_mesh_json(stats.initial_mesh);
+      j["init"] = fields_json(stats.initial_mesh);
       j["input_components"] = {{"components", stats.input_components},
                                {"missing", stats.input_components_missing},
                                {"largest_missing_diameter", stats.largest_missing_component},
                                {"missing_means", "no vertex of the component lies within a cube diagonal of the "
                                                  "output: it is below the resolution"}};
-      if(stats.valence_run) j["valence"] = valence_json(stats.valence);
-      if(stats.fit_run) j["fit"] = fit_json(stats.fit);
+      if(stats.valence_run) j["valence"] = fields_json(stats.valence);
+      if(stats.fit_run) j["fit"] = fields_json(stats.fit);
       j["output_report"] = report_to_json(output_path, report, {});
       if(!ratios.empty()) j["levels"] = levels_json;
       j["timings"] = {{"init", stats.initial_mesh.seconds},

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // nonobtuse-remesh report MESH [--reference INPUT] [--json FILE]
 
 #include "cli.h"
@@ -88,8 +90,6 @@ int report_command(int argc, char** argv)
 
   return run_guarded("report", [&]() {
     const NR::Angle_bounds bounds(min_angle, max_angle);
-    if(!(hausdorff_error > 0.))
-      throw std::invalid_argument("--hausdorff-error must be positive");
     check_paths({{"MESH", path}, {"--reference", reference_path}}, {{"--json", json_path}});
 
     NR::Read_log log;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Angle-bounded decimation (thesis, chapter 6): quadric-error edge collapses
 // that keep every angle in [30, 90] degrees, and the hierarchy of coarser
 // meshes they make.
@@ -6,12 +8,14 @@
 #define CGAL_NONOBTUSE_REMESHING_ANGLE_BOUNDED_DECIMATION_H
 
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
+#include <CGAL/Nonobtuse_remeshing/exceptions.h>
 #include <CGAL/Nonobtuse_remeshing/internal/Angle_bounded_decimation.h>
 #include <CGAL/Nonobtuse_remeshing/parameters.h>
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 
 #include <cmath>
 #include <cstddef>
@@ -45,11 +49,10 @@ struct Decimation_level
 
 namespace internal {
 
-// Reads and checks the options shared by both entry points; throws
-// std::invalid_argument before anything changes.
-template <typename TriangleMesh, typename NamedParameters>
-Angle_bounded_decimation_options decimation_options(const TriangleMesh& mesh, const NamedParameters& np,
-                                                    double& diagonal)
+// Reads and checks the parameters shared by both entry points; throws
+// Bad_parameter before anything changes.
+template <typename NamedParameters>
+Angle_bounded_decimation_options decimation_options(const NamedParameters& np)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -60,17 +63,36 @@ Angle_bounded_decimation_options decimation_options(const TriangleMesh& mesh, co
   o.max_error = choose_parameter(get_parameter(np, internal_np::max_error), o.max_error);
   o.relaxation = choose_parameter(get_parameter(np, internal_np::relaxation), o.relaxation);
   if(o.drum_subdivisions < 1 || o.drum_subdivisions > 16)
-    throw std::invalid_argument("the drum subdivisions k must lie in [1, 16]");
-  if(o.min_interior_valence > 12 || o.min_border_valence > 12)
-    throw std::invalid_argument("the valence floors must be at most 12");
-  if(!(o.max_error > 0.)) throw std::invalid_argument("the maximum error must be positive");
-  if(!is_triangle_mesh(mesh)) throw std::invalid_argument("angle_bounded_decimation: not a triangle mesh");
-  if(!certify_angle_bounds(mesh).is_certified())
-    throw std::invalid_argument("angle_bounded_decimation needs a mesh certified in [30, 90] degrees");
-  const Bbox_3 box = Polygon_mesh_processing::bbox(mesh);
-  diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                       CGAL::square(box.zmax() - box.zmin()));
+    throw Bad_parameter("the drum subdivisions k must lie in [1, 16]");
+  if(o.min_interior_valence < 3 || o.min_interior_valence > 12)
+    throw Bad_parameter("the interior valence floor must lie in [3, 12]");
+  if(o.min_border_valence < 2 || o.min_border_valence > 12)
+    throw Bad_parameter("the border valence floor must lie in [2, 12]");
+  if(!(o.max_error > 0.)) throw Bad_parameter("the maximum error must be positive");
   return o;
+}
+
+// The ratios of a hierarchy's levels; throws Bad_parameter unless they
+// decrease strictly within (0, 1).
+inline void check_level_ratios(const std::vector<double>& ratios)
+{
+  if(ratios.empty()) throw Bad_parameter("the hierarchy needs at least one ratio");
+  for(std::size_t i = 0; i < ratios.size(); ++i)
+    if(!(ratios[i] > 0. && ratios[i] < 1.) || (i > 0 && !(ratios[i] < ratios[i - 1])))
+      throw Bad_parameter("the ratios of the levels must decrease strictly within (0, 1)");
+}
+
+// The bounding-box diagonal of `mesh`, which must be a triangle mesh
+// certified in [30, 90] degrees; throws Bad_input otherwise.
+template <typename TriangleMesh, typename VertexPointMap>
+double certified_mesh_diagonal(const TriangleMesh& mesh, VertexPointMap vpm)
+{
+  if(!is_triangle_mesh(mesh)) throw Bad_input("angle_bounded_decimation: not a triangle mesh");
+  if(!certify_angle_bounds(mesh, CGAL::parameters::vertex_point_map(vpm)).is_certified())
+    throw Bad_input("angle_bounded_decimation needs a mesh certified in [30, 90] degrees");
+  const Bbox_3 box = Polygon_mesh_processing::bbox(mesh, CGAL::parameters::vertex_point_map(vpm));
+  return std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                   CGAL::square(box.zmax() - box.zmin()));
 }
 
 } // namespace internal
@@ -102,8 +124,9 @@ Angle_bounded_decimation_options decimation_options(const TriangleMesh& mesh, co
 /// points its quadric sums (sqrt of the cost, early termination of 6.5), when
 /// no collapse is left (after a relaxation, if on), or when the visitor
 /// cancels; `stop_reason` says which. Removed elements may leave garbage in a
-/// `Surface_mesh` (call `collect_garbage()`). The mesh's internal point map
-/// is used, as in `deform_to_fit()`.
+/// `Surface_mesh` (call `collect_garbage()`). The points are read and
+/// written through the `vertex_point_map`, and decided exactly on their double
+/// coordinates, as in `deform_to_fit()`.
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{target_vertices} vertices to keep; default from `vertex_ratio` \cgalParamNEnd
@@ -118,32 +141,36 @@ Angle_bounded_decimation_options decimation_options(const TriangleMesh& mesh, co
 ///     single greedy run; default true \cgalParamNEnd
 ///   \cgalParamNBegin{decimation_visitor} progress and cancellation, see `Default_decimation_visitor`
 ///     (pass `std::ref(visitor)` to keep its state) \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map} the points of `mesh`; default the mesh's internal point map \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// Throws std::invalid_argument, leaving `mesh` unchanged, if `mesh` is not a
-/// triangle mesh certified in [30, 90] degrees or a parameter is out of range.
+/// Throws, leaving `mesh` unchanged, `Bad_parameter` if a parameter is out of
+/// range and `Bad_input` if `mesh` is not a triangle mesh certified in
+/// [30, 90] degrees.
 template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Angle_bounded_decimation_statistics angle_bounded_decimation(
     TriangleMesh& mesh, const NamedParameters& np = CGAL::parameters::default_values())
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  double diagonal = 0.;
-  const internal::Angle_bounded_decimation_options o = internal::decimation_options(mesh, np, diagonal);
+  const internal::Angle_bounded_decimation_options o = internal::decimation_options(np);
   const double ratio = choose_parameter(get_parameter(np, internal_np::vertex_ratio), 0.5);
-  if(!(ratio > 0. && ratio <= 1.)) throw std::invalid_argument("the vertex ratio must lie in (0, 1]");
+  if(!(ratio > 0. && ratio <= 1.)) throw Bad_parameter("the vertex ratio must lie in (0, 1]");
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_property_map(CGAL::vertex_point, mesh));
+  const double diagonal = internal::certified_mesh_diagonal(mesh, vpm);
   const std::size_t n = vertices(mesh).size();
   const std::size_t target =
       choose_parameter(get_parameter(np, internal_np::target_vertices), std::size_t(std::llround(ratio * double(n))));
   auto given = choose_parameter(get_parameter(np, internal_np::decimation_visitor), Default_decimation_visitor());
   auto& visitor = internal::visitor_reference(given);
   TriangleMesh reference;  // the full mesh, which the relaxation fits to
-  if(o.relaxation) copy_face_graph(mesh, reference);
-  const auto vpm = get(CGAL::vertex_point, mesh);
+  if(o.relaxation) copy_face_graph(mesh, reference, CGAL::parameters::vertex_point_map(vpm));
   internal::Angle_bounded_decimation<TriangleMesh, std::remove_const_t<decltype(vpm)>,
                                      std::remove_reference_t<decltype(visitor)> >
       decimation(mesh, vpm, o, diagonal, visitor);
-  return decimation.run({target}, reference, [](std::size_t, bool, const Angle_bounded_decimation_statistics&) {});
+  return decimation.run({target}, reference, get_const_property_map(CGAL::vertex_point, reference),
+                        [](std::size_t, bool, const Angle_bounded_decimation_statistics&) {});
 }
 
 /// \ingroup PkgNonobtuseRemeshingRef
@@ -154,7 +181,8 @@ Angle_bounded_decimation_statistics angle_bounded_decimation(
 /// before a target (see `angle_bounded_decimation()`), that level holds the
 /// mesh where it stopped, with `reached` false, and the levels after it are
 /// left out. Takes the named parameters of `angle_bounded_decimation()`
-/// except the targets; `mesh` is not changed.
+/// except the targets; `mesh` is not changed (its points are read through the
+/// `vertex_point_map`; the levels hold theirs in their internal point maps).
 template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 std::vector<Decimation_level<TriangleMesh> > angle_bounded_decimation_hierarchy(
     const TriangleMesh& mesh, const std::vector<double>& ratios,
@@ -162,15 +190,14 @@ std::vector<Decimation_level<TriangleMesh> > angle_bounded_decimation_hierarchy(
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  if(ratios.empty()) throw std::invalid_argument("the hierarchy needs at least one ratio");
-  for(std::size_t i = 0; i < ratios.size(); ++i)
-    if(!(ratios[i] > 0. && ratios[i] < 1.) || (i > 0 && !(ratios[i] < ratios[i - 1])))
-      throw std::invalid_argument("the ratios of the levels must decrease strictly within (0, 1)");
-  double diagonal = 0.;
-  const internal::Angle_bounded_decimation_options o = internal::decimation_options(mesh, np, diagonal);
+  internal::check_level_ratios(ratios);
+  const internal::Angle_bounded_decimation_options o = internal::decimation_options(np);
+  const auto input_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                          get_const_property_map(CGAL::vertex_point, mesh));
+  const double diagonal = internal::certified_mesh_diagonal(mesh, input_vpm);
 
   TriangleMesh work;
-  copy_face_graph(mesh, work);
+  copy_face_graph(mesh, work, CGAL::parameters::vertex_point_map(input_vpm));
   std::vector<std::size_t> targets;
   for(double r : ratios) targets.push_back(std::size_t(std::llround(r * double(vertices(mesh).size()))));
   auto given = choose_parameter(get_parameter(np, internal_np::decimation_visitor), Default_decimation_visitor());
@@ -180,7 +207,7 @@ std::vector<Decimation_level<TriangleMesh> > angle_bounded_decimation_hierarchy(
                                      std::remove_reference_t<decltype(visitor)> >
       decimation(work, vpm, o, diagonal, visitor);
   std::vector<Decimation_level<TriangleMesh> > levels;
-  decimation.run(targets, mesh, [&](std::size_t i, bool reached, const Angle_bounded_decimation_statistics& s) {
+  decimation.run(targets, mesh, input_vpm, [&](std::size_t i, bool reached, const Angle_bounded_decimation_statistics& s) {
     levels.emplace_back();
     copy_face_graph(work, levels.back().mesh);
     levels.back().target_vertices = targets[i];

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Pictures of the angles of triangle meshes: an SVG histogram of the corner
 // angles of several meshes, and a PLY whose faces are coloured by angle.
 //
@@ -9,6 +11,7 @@
 #ifndef CGAL_NONOBTUSE_REMESHING_ANGLE_PICTURES_H
 #define CGAL_NONOBTUSE_REMESHING_ANGLE_PICTURES_H
 
+#include <CGAL/Nonobtuse_remeshing/exceptions.h>
 #include <CGAL/Nonobtuse_remeshing/internal/angle_predicates.h>
 #include <CGAL/Nonobtuse_remeshing/mesh_io.h>
 
@@ -76,7 +79,7 @@ template <typename TriangleMesh, typename F>
 void for_each_triangle(const TriangleMesh& mesh, F f)
 {
   if(!is_triangle_mesh(mesh))
-    throw std::invalid_argument("angle pictures: the mesh has a face that is not a triangle");
+    throw Bad_input("angle pictures: the mesh has a face that is not a triangle");
   const auto vpm = get(CGAL::vertex_point, mesh);
   for(auto face : faces(mesh)) {
     const auto h = halfedge(face, mesh);
@@ -114,7 +117,7 @@ template <typename TriangleMesh>
 Angle_histogram angle_histogram(const TriangleMesh& mesh, const std::string& name, int bin_degrees = 2)
 {
   if(bin_degrees < 1 || 90 % bin_degrees != 0)
-    throw std::invalid_argument("angle_histogram: the bin width must divide 90 degrees");
+    throw Bad_parameter("angle_histogram: the bin width must divide 90 degrees");
   Angle_histogram h;
   h.name = name;
   h.bin_degrees = bin_degrees;

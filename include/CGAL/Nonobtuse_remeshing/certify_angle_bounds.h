@@ -1,8 +1,11 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Exact certification of the angle bounds of a triangle mesh.
 
 #ifndef CGAL_NONOBTUSE_REMESHING_CERTIFY_ANGLE_BOUNDS_H
 #define CGAL_NONOBTUSE_REMESHING_CERTIFY_ANGLE_BOUNDS_H
 
+#include <CGAL/Nonobtuse_remeshing/exceptions.h>
 #include <CGAL/Nonobtuse_remeshing/internal/angle_predicates.h>
 #include <CGAL/Nonobtuse_remeshing/parameters.h>
 
@@ -85,8 +88,9 @@ inline int angle_bin(double degrees)
 /// direction, so the certified interval is never looser than the one
 /// requested. A mesh with no face is not certified.
 ///
-/// \pre `mesh` is a triangle mesh (std::invalid_argument is thrown otherwise)
-/// whose points have double coordinates.
+/// The points must have double coordinates. Throws `Bad_parameter` for bounds
+/// outside 0 <= min <= max <= 180, and `Bad_input` if `mesh` has a face that is
+/// not a triangle.
 template <typename TriangleMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Angle_certificate<typename boost::graph_traits<TriangleMesh>::face_descriptor>
@@ -104,7 +108,7 @@ certify_angle_bounds(const TriangleMesh& mesh,
                                     get_const_property_map(CGAL::vertex_point, mesh));
 
   if(!is_triangle_mesh(mesh))
-    throw std::invalid_argument("certify_angle_bounds: the mesh has a face that is not a triangle");
+    throw Bad_input("certify_angle_bounds: the mesh has a face that is not a triangle");
 
   Angle_certificate<face_descriptor> result;
   result.min_bound = bounds.min_degrees();

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Deform-to-fit (thesis, chapter 5): moves the vertices of a certified mesh
 // towards the input surface, keeping every angle in [30, 90] degrees.
 
@@ -5,12 +7,14 @@
 #define CGAL_NONOBTUSE_REMESHING_DEFORM_TO_FIT_H
 
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
+#include <CGAL/Nonobtuse_remeshing/exceptions.h>
 #include <CGAL/Nonobtuse_remeshing/internal/Deform_to_fit.h>
 #include <CGAL/Nonobtuse_remeshing/internal/closest_triangle.h>
 #include <CGAL/Nonobtuse_remeshing/parameters.h>
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -21,7 +25,7 @@ namespace Nonobtuse_remeshing {
 
 namespace internal {
 
-// Reads and checks the fit's named parameters; throws std::invalid_argument
+// Reads and checks the fit's named parameters; throws Bad_parameter
 // for one out of range.
 template <typename NamedParameters>
 Deform_to_fit_options deform_to_fit_options(const NamedParameters& np, int& rings)
@@ -40,13 +44,14 @@ Deform_to_fit_options deform_to_fit_options(const NamedParameters& np, int& ring
   o.tangential_smoothing = choose_parameter(get_parameter(np, internal_np::tangential_smoothing), o.tangential_smoothing);
   o.attract_features = choose_parameter(get_parameter(np, internal_np::attract_features), o.attract_features);
   rings = choose_parameter(get_parameter(np, internal_np::quadric_rings), 0);
-  if(!(o.alpha >= 0. && o.alpha <= 1.)) throw std::invalid_argument("alpha must lie in [0, 1]");
+  if(!(o.alpha >= 0. && o.alpha <= 1.)) throw Bad_parameter("alpha must lie in [0, 1]");
   if(o.drum_subdivisions < 1 || o.drum_subdivisions > 16)
-    throw std::invalid_argument("the drum subdivisions k must lie in [1, 16]");
-  if(rings < 0 || rings > 4) throw std::invalid_argument("the quadric rings r must lie in [0, 4]");
-  if(o.smoothing_steps < 0) throw std::invalid_argument("the smoothing steps must be at least 0");
-  if(!(o.tolerance > 0. && o.tolerance < 1.)) throw std::invalid_argument("the fit tolerance must lie in (0, 1)");
-  if(!(o.max_seconds >= 0.)) throw std::invalid_argument("the time budget must be at least 0");
+    throw Bad_parameter("the drum subdivisions k must lie in [1, 16]");
+  if(rings < 0 || rings > 4) throw Bad_parameter("the quadric rings r must lie in [0, 4]");
+  if(o.smoothing_steps < 0 || o.smoothing_steps > 100)
+    throw Bad_parameter("the smoothing steps must lie in [0, 100]");
+  if(!(o.tolerance > 0. && o.tolerance < 1.)) throw Bad_parameter("the fit tolerance must lie in (0, 1)");
+  if(!(o.max_seconds >= 0.)) throw Bad_parameter("the time budget must be at least 0");
   return o;
 }
 
@@ -83,7 +88,7 @@ struct Default_deform_to_fit_visitor
 ///   \cgalParamNBegin{drum_subdivisions} k, the drum planes per side of F(v), in [1, 16]; default 2 \cgalParamNEnd
 ///   \cgalParamNBegin{quadric_rings} r, the rings of input triangles around the closest one
 ///     whose planes make D, in [0, 4]; default 0 \cgalParamNEnd
-///   \cgalParamNBegin{smoothing_steps} constrained Laplacian smoothing passes; default 2 \cgalParamNEnd
+///   \cgalParamNBegin{smoothing_steps} constrained Laplacian smoothing passes, in [0, 100]; default 2 \cgalParamNEnd
 ///   \cgalParamNBegin{fit_tolerance} a move must improve L by (fit_tolerance * input bounding-box
 ///     diagonal)^2; the fit stops when no vertex can; default 1e-4 \cgalParamNEnd
 ///   \cgalParamNBegin{max_moves} budget in moves; default unlimited \cgalParamNEnd
@@ -94,34 +99,50 @@ struct Default_deform_to_fit_visitor
 ///   \cgalParamNBegin{attract_features} default true \cgalParamNEnd
 ///   \cgalParamNBegin{fit_visitor} progress and cancellation, see `Default_deform_to_fit_visitor`
 ///     (pass `std::ref(visitor)` to keep its state) \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map} the points of `mesh`, read and written; default the mesh's
+///     internal point map \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// Throws std::invalid_argument if `mesh` is not certified in [30, 90], if
-/// `input` has no face, no size or either is not a triangle mesh, or if a parameter
-/// is out of range; `mesh` is then unchanged.
-template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+/// `np_input` may hold the `vertex_point_map` of `input` (read only). The points must have
+/// double coordinates (for example of `Exact_predicates_inexact_constructions_kernel`,
+/// `Simple_cartesian<double>` or `Cartesian<double>`): every angle is decided exactly on those
+/// doubles with the filtered predicates of `Exact_predicates_inexact_constructions_kernel`,
+/// whatever the points' kernel, which is why no `geom_traits` is taken.
+///
+/// Throws `Bad_parameter` if a parameter is out of range, and `Bad_input` if
+/// `mesh` is not certified in [30, 90] or `input` has no face, no size or is
+/// not a triangle mesh; `mesh` is then unchanged.
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters,
+          typename InputNamedParameters = CGAL::parameters::Default_named_parameters>
 Deform_to_fit_statistics deform_to_fit(TriangleMesh& mesh, const TriangleMesh& input,
-                                       const NamedParameters& np = CGAL::parameters::default_values())
+                                       const NamedParameters& np = CGAL::parameters::default_values(),
+                                       const InputNamedParameters& np_input = CGAL::parameters::default_values())
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
   int rings = 0;
   const internal::Deform_to_fit_options o = internal::deform_to_fit_options(np, rings);
-  if(num_faces(input) == 0) throw std::invalid_argument("deform_to_fit: the input has no face");
-  if(!is_triangle_mesh(input)) throw std::invalid_argument("deform_to_fit: the input is not a triangle mesh");
-  if(!certify_angle_bounds(mesh).is_certified())
-    throw std::invalid_argument("deform_to_fit needs a mesh certified in [30, 90] degrees");
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_property_map(CGAL::vertex_point, mesh));
+  const auto input_vpm = choose_parameter(get_parameter(np_input, CGAL::internal_np::vertex_point),
+                                          get_const_property_map(CGAL::vertex_point, input));
+  if(num_faces(input) == 0) throw Bad_input("deform_to_fit: the input has no face");
+  if(!is_triangle_mesh(input)) throw Bad_input("deform_to_fit: the input is not a triangle mesh");
+  if(!certify_angle_bounds(mesh, CGAL::parameters::vertex_point_map(vpm)).is_certified())
+    throw Bad_input("deform_to_fit needs a mesh certified in [30, 90] degrees");
 
-  const Bbox_3 box = Polygon_mesh_processing::bbox(input);
+  const Bbox_3 box = Polygon_mesh_processing::bbox(input, CGAL::parameters::vertex_point_map(input_vpm));
   const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
                                     CGAL::square(box.zmax() - box.zmin()));
-  if(!(diagonal > 0.)) throw std::invalid_argument("deform_to_fit: the input's bounding box has no size");
+  if(!(diagonal > 0.)) throw Bad_input("deform_to_fit: the input's bounding box has no size");
   // a visitor given by value is copied, one given with std::ref is used in place
   auto given = choose_parameter(get_parameter(np, internal_np::fit_visitor), Default_deform_to_fit_visitor());
   auto& visitor = internal::visitor_reference(given);
-  const internal::Closest_triangle<TriangleMesh> closest(input, rings);
-  internal::Deform_to_fit<TriangleMesh, std::remove_reference_t<decltype(visitor)> > optimizer(mesh, closest,
-                                                                                              diagonal, o, visitor);
+  using Input = internal::Closest_triangle<TriangleMesh, std::remove_const_t<decltype(input_vpm)> >;
+  const Input closest(input, input_vpm, rings);
+  internal::Deform_to_fit<TriangleMesh, std::remove_const_t<decltype(vpm)>, Input,
+                          std::remove_reference_t<decltype(visitor)> >
+      optimizer(mesh, vpm, closest, diagonal, o, visitor);
   return optimizer.run();
 }
 

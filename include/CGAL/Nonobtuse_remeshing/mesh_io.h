@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Checked reading and atomic, full-precision writing of triangle meshes.
 //
 // Reading goes through a polygon soup so that nothing is repaired silently:
@@ -10,6 +12,7 @@
 #define CGAL_NONOBTUSE_REMESHING_MESH_IO_H
 
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
+#include <CGAL/Nonobtuse_remeshing/exceptions.h>
 #include <CGAL/Nonobtuse_remeshing/internal/soup_readers.h>
 
 #include <CGAL/IO/polygon_soup_io.h>
@@ -41,19 +44,6 @@
 
 namespace CGAL {
 namespace Nonobtuse_remeshing {
-
-/// Thrown when an input file cannot be turned into a triangle mesh; the
-/// message is one line naming the problem.
-struct Bad_input : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
-
-/// Thrown when an output file cannot be written.
-struct Output_error : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
 
 /// What `read_triangle_mesh()` found in the file and had to do to it.
 struct Read_log

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // The initial mesh: nonobtuse Marching Cubes, patch-based so that open and
 // self-intersecting inputs work (thesis, chapter 4).
 
@@ -5,7 +7,11 @@
 #define CGAL_NONOBTUSE_REMESHING_NONOBTUSE_MARCHING_CUBES_H
 
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
+#include <CGAL/Nonobtuse_remeshing/exceptions.h>
+#include <CGAL/Nonobtuse_remeshing/internal/epick_points.h>
 #include <CGAL/Nonobtuse_remeshing/internal/grid.h>
+#include <CGAL/Nonobtuse_remeshing/internal/input_triangles.h>
+#include <CGAL/Nonobtuse_remeshing/internal/inside_test.h>
 #include <CGAL/Nonobtuse_remeshing/internal/marching_cubes_table.h>
 #include <CGAL/Nonobtuse_remeshing/internal/mesh_cube_intersection.h>
 #include <CGAL/Nonobtuse_remeshing/internal/patches_and_signs.h>
@@ -16,8 +22,9 @@
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 
 #include <algorithm>
 #include <chrono>
@@ -40,15 +47,6 @@ enum class Sign_source
   patches,
   /// one sign per grid corner from an exact inside/outside test; closed inputs only
   inside_test
-};
-
-/// \ingroup PkgNonobtuseRemeshingRef
-/// Thrown by `nonobtuse_marching_cubes()` (and so by `nonobtuse_remesh()`)
-/// before the initial mesh is built when it would need more memory than the
-/// `memory_budget` named parameter allows. The message gives the estimate.
-struct Memory_budget_exceeded : std::invalid_argument
-{
-  using std::invalid_argument::invalid_argument;
 };
 
 /// \ingroup PkgNonobtuseRemeshingRef
@@ -82,98 +80,6 @@ struct Marching_cubes_result
   std::vector<std::size_t> face_patch;
 };
 
-namespace internal {
-
-template <typename TriangleMesh>
-Input_triangles input_triangles(const TriangleMesh& mesh)
-{
-  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
-  const auto vpm = get(CGAL::vertex_point, mesh);
-  std::unordered_map<face_descriptor, std::size_t> index;
-  std::size_t i = 0;
-  for(face_descriptor f : faces(mesh)) index[f] = i++;
-  Input_triangles input;
-  for(face_descriptor f : faces(mesh)) {
-    const auto h = halfedge(f, mesh);
-    input.triangles.emplace_back(get(vpm, source(h, mesh)), get(vpm, target(h, mesh)),
-                                 get(vpm, target(next(h, mesh), mesh)));
-    std::array<std::size_t, 3> neighbours;
-    auto g = h;
-    for(int k = 0; k < 3; ++k, g = next(g, mesh)) {
-      const auto o = opposite(g, mesh);
-      neighbours[k] = is_border(o, mesh) ? Input_triangles::none : index.at(face(o, mesh));
-    }
-    input.neighbours.push_back(neighbours);
-  }
-  return input;
-}
-
-// Edge-connected component of each input triangle.
-inline std::vector<std::size_t> input_components(const Input_triangles& input)
-{
-  std::vector<std::size_t> root(input.triangles.size());
-  std::iota(root.begin(), root.end(), 0);
-  auto find = [&](std::size_t x) {
-    while(root[x] != x) x = root[x] = root[root[x]];
-    return x;
-  };
-  for(std::size_t t = 0; t < root.size(); ++t)
-    for(std::size_t n : input.neighbours[t])
-      if(n != Input_triangles::none) root[find(t)] = find(n);
-  for(std::size_t t = 0; t < root.size(); ++t) root[t] = find(t);
-  return root;
-}
-
-// One patch per cube, signed by an exact inside test at the grid corners.
-template <typename TriangleMesh>
-std::vector<Patch> inside_test_patches(const TriangleMesh& mesh, const Grid& grid, const Cube_triangles& cubes)
-{
-  const Side_of_triangle_mesh<TriangleMesh, Epick> side(mesh);
-  std::unordered_map<std::int64_t, bool> inside;
-  std::vector<Patch> patches;
-  for(std::size_t c = 0; c < cubes.size(); ++c) {
-    Patch patch;
-    patch.cube = cubes.cube_ids[c];
-    patch.triangles.assign(cubes.triangles.begin() + cubes.first[c], cubes.triangles.begin() + cubes.first[c + 1]);
-    const std::array<int, 3> cube = grid.cube_index(patch.cube);
-    for(int corner = 0; corner < 8; ++corner) {
-      const int i = cube[0] + marching_cubes::corner_bit(corner, 0), j = cube[1] + marching_cubes::corner_bit(corner, 1),
-                k = cube[2] + marching_cubes::corner_bit(corner, 2);
-      auto found = inside.find(grid.corner_id(i, j, k));
-      if(found == inside.end())
-        found = inside.emplace(grid.corner_id(i, j, k),
-                               side(signs::corner_point(grid, cube, corner)) != ON_UNBOUNDED_SIDE).first;
-      if(found->second) patch.config |= 1u << corner;
-    }
-    patch.state = (patch.config != 0 && patch.config != 255) ? Patch::triangulated : Patch::black;
-    patches.push_back(std::move(patch));
-  }
-  return patches;
-}
-
-// The inside test ignores the input's orientation, so its triangles point
-// out of the solid. Each output component is flipped when the input
-// component it mostly comes from is oriented inwards (negative signed volume).
-inline void orient_like_input(const Input_triangles& input, const std::vector<std::size_t>& input_component,
-                              const std::vector<Patch>& patches, Marching_cubes_soup& soup)
-{
-  std::unordered_map<std::size_t, double> volume;  // six times the signed volume
-  for(std::size_t t = 0; t < input.triangles.size(); ++t) {
-    const Epick::Triangle_3& tri = input.triangles[t];
-    volume[input_component[t]] += CGAL::determinant(tri[0] - ORIGIN, tri[1] - ORIGIN, tri[2] - ORIGIN);
-  }
-  const std::vector<std::size_t> root = edge_connected_components(soup.triangles);
-  std::unordered_map<std::size_t, long> vote;
-  for(std::size_t f = 0; f < soup.triangles.size(); ++f) {
-    const std::size_t t = patches[soup.triangle_patch[f]].triangles.front();
-    vote[root[f]] += volume[input_component[t]] < 0 ? -1 : 1;
-  }
-  for(std::size_t f = 0; f < soup.triangles.size(); ++f)
-    if(vote[root[f]] < 0) std::swap(soup.triangles[f][1], soup.triangles[f][2]);
-}
-
-} // namespace internal
-
 /// \ingroup PkgNonobtuseRemeshingRef
 /// Builds the initial nonobtuse mesh of `input` into `output` (cleared first):
 /// the nonobtuse Marching Cubes of the thesis's chapter 4 on a grid of
@@ -192,15 +98,22 @@ inline void orient_like_input(const Input_triangles& input, const std::vector<st
 ///     by the grid (about 2 KiB each, measured peak); a `double`, default
 ///     `default_memory_budget` (4 GiB). Beyond it `Memory_budget_exceeded` is
 ///     thrown before the mesh is built. \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map} the points of `input`; default its internal point map \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// Throws std::invalid_argument for a resolution outside [1, 1024], a flat
-/// input, an input too small or too far from the origin for exact grid
-/// coordinates, or an inside test asked on an open input.
-template <typename TriangleMesh,
-          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+/// `np_out` may hold the `vertex_point_map` of `output`, through which its points are written.
+/// The points must have double coordinates (see `deform_to_fit()`).
+///
+/// Throws `Bad_parameter` for a resolution outside [1, 1024] or a budget that
+/// is not positive; `Bad_input` for a flat input, an input too small or too
+/// far from the origin for exact grid coordinates, sheets closer together
+/// than a cube, or an inside test asked on an open input; and
+/// `Memory_budget_exceeded` (a `Bad_input`) as said above.
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters,
+          typename OutputNamedParameters = CGAL::parameters::Default_named_parameters>
 Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, TriangleMesh& output,
-                                               const NamedParameters& np = CGAL::parameters::default_values())
+                                               const NamedParameters& np = CGAL::parameters::default_values(),
+                                               const OutputNamedParameters& np_out = CGAL::parameters::default_values())
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -211,11 +124,15 @@ Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, Triang
   result.resolution = choose_parameter(get_parameter(np, internal_np::resolution), 100);
   const Sign_source source = choose_parameter(get_parameter(np, internal_np::sign_source), Sign_source::patches);
   if(!is_triangle_mesh(input) || faces(input).size() == 0)
-    throw std::invalid_argument("nonobtuse_marching_cubes: the input must be a non-empty triangle mesh");
+    throw Bad_input("nonobtuse_marching_cubes: the input must be a non-empty triangle mesh");
   if(source == Sign_source::inside_test && !is_closed(input))
-    throw std::invalid_argument("the inside test needs a closed input");
+    throw Bad_input("the inside test needs a closed input");
+  const auto input_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                          get_const_property_map(CGAL::vertex_point, input));
+  const auto output_vpm = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
+                                           get_property_map(CGAL::vertex_point, output));
 
-  const internal::Input_triangles in = internal::input_triangles(input);
+  const internal::Input_triangles in = internal::input_triangles(input, input_vpm);
   std::vector<internal::Epick::Point_3> corners;
   for(const auto& t : in.triangles)
     for(int i = 0; i < 3; ++i) corners.push_back(t[i]);
@@ -235,7 +152,7 @@ Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, Triang
   // intersected cube, more where input sheets share a cube); 16 bytes per
   // (cube, triangle) pair come first. Both are checked before they are spent.
   const double budget = choose_parameter(get_parameter(np, internal_np::memory_budget), default_memory_budget);
-  if(!(budget > 0.)) throw std::invalid_argument("the memory budget must be positive");
+  if(!(budget > 0.)) throw Bad_parameter("the memory budget must be positive");
   constexpr double bytes_per_patch = 2048., bytes_per_pair = 32.;
   const auto gib = [](double bytes) {
     std::ostringstream text;
@@ -255,7 +172,7 @@ Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, Triang
   // Phase 2: patches and signs.
   const std::vector<internal::Patch> patches = source == Sign_source::patches
                                                    ? internal::patches_and_signs(grid, cubes, in)
-                                                   : internal::inside_test_patches(input, grid, cubes);
+                                                   : internal::inside_test_patches(input, input_vpm, grid, cubes);
   result.patches = patches.size();
   if(bytes_per_patch * double(patches.size()) > budget)
     throw Memory_budget_exceeded("at resolution " + std::to_string(result.resolution) + " the initial mesh would need about " +
@@ -293,7 +210,7 @@ Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, Triang
       }
     }
     if(stacked > 100 && 4 * stacked > triangulated)
-      throw std::invalid_argument("at resolution " + std::to_string(result.resolution) + ", " + std::to_string(stacked) +
+      throw Bad_input("at resolution " + std::to_string(result.resolution) + ", " + std::to_string(stacked) +
                                   " of " + std::to_string(triangulated) +
                                   " patches repeat another one of their cube with the same orientation (up to " +
                                   std::to_string(most) + " sheets in one cube): the input has sheets closer "
@@ -312,16 +229,16 @@ Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, Triang
   result.non_manifold_faces_removed = soup.removed_non_manifold;
   result.islands_removed = soup.islands_removed;
 
-  using Point = typename boost::property_traits<
-      typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type;
+  using Point = typename boost::property_traits<std::remove_const_t<decltype(output_vpm)> >::value_type;
   std::vector<Point> points;
   for(const auto& p : soup.positions)
     points.emplace_back(grid.coordinate(0, p[0]), grid.coordinate(1, p[1]), grid.coordinate(2, p[2]));
   std::vector<std::array<std::size_t, 3> > triangles = soup.triangles;
   if(!PMP::is_polygon_soup_a_polygon_mesh(triangles))
-    throw std::logic_error("nonobtuse_marching_cubes: the stitched soup is not a polygon mesh");
+    CGAL_error_msg("nonobtuse_marching_cubes: the stitched soup is not a polygon mesh");
   clear(output);
-  PMP::polygon_soup_to_polygon_mesh(points, triangles, output);
+  PMP::polygon_soup_to_polygon_mesh(points, triangles, output, CGAL::parameters::default_values(),
+                                    CGAL::parameters::vertex_point_map(output_vpm));
 
   // Statistics (Table 4.1) and the face-to-patch correspondence.
   for(const auto& patch : patches) result.patch_faces.push_back(patch.triangles);
@@ -340,9 +257,10 @@ Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, Triang
     result.max_valence = (std::max)(result.max_valence, std::size_t(degree(v, output)));
   }
   if(result.vertices_out == 0) result.min_valence = 0;
-  const auto certificate = certify_angle_bounds(output, parameters::min_angle(35.26));
+  const auto certificate = certify_angle_bounds(
+      output, parameters::combine(parameters::min_angle(35.26), CGAL::parameters::vertex_point_map(output_vpm)));
   if(result.triangles_out > 0 && !certificate.is_certified())
-    throw std::logic_error("nonobtuse_marching_cubes: an output angle is outside [35.26, 90]");
+    CGAL_error_msg("nonobtuse_marching_cubes: an output angle is outside [35.26, 90]");
   result.min_angle = certificate.min_angle;
   result.max_angle = certificate.max_angle;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

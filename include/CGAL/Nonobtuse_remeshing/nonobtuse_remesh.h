@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // The whole pipeline in one call: the initial mesh (thesis, chapter 4), the
 // removal of bad-valence vertices (5.7) and deform-to-fit (chapter 5), with
 // one visitor for progress and cancellation across the stages.
@@ -7,6 +9,7 @@
 
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
 #include <CGAL/Nonobtuse_remeshing/deform_to_fit.h>
+#include <CGAL/Nonobtuse_remeshing/exceptions.h>
 #include <CGAL/Nonobtuse_remeshing/internal/missing_components.h>
 #include <CGAL/Nonobtuse_remeshing/nonobtuse_marching_cubes.h>
 #include <CGAL/Nonobtuse_remeshing/parameters.h>
@@ -127,65 +130,36 @@ void collect_garbage_of(Mesh&, long) {}
 /// faces) whose initial mesh of `input` should have about `target_vertices`
 /// vertices: N = L sqrt(V / (c A)), with L the longest side, A the area and c = 1.8
 /// the vertex density measured on curved surfaces (see the manual). Clamped
-/// to [1, 1024]. Throws std::invalid_argument for an input without area.
-template <typename TriangleMesh>
-int resolution_for_target_vertices(const TriangleMesh& input, std::size_t target_vertices)
+/// to [1, 1024]. Throws `Bad_input` for an input without area.
+/// `np` may hold the `vertex_point_map` of `input`.
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+int resolution_for_target_vertices(const TriangleMesh& input, std::size_t target_vertices,
+                                   const NamedParameters& np = CGAL::parameters::default_values())
 {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
   Bbox_3 box;  // of the faces, as the grid's
-  const auto vpm = get(CGAL::vertex_point, input);
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, input));
   for(auto f : faces(input))
     for(auto v : vertices_around_face(halfedge(f, input), input)) box += get(vpm, v).bbox();
   const double longest = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
   if(longest < 1e-30 || longest > 1e30)  // as the grid refuses it
-    throw std::invalid_argument("the input's size is outside the supported range [1e-30, 1e30]: scale it");
-  const double area = Polygon_mesh_processing::area(input);
+    throw Bad_input("the input's size is outside the supported range [1e-30, 1e30]: scale it");
+  const double area = Polygon_mesh_processing::area(input, CGAL::parameters::vertex_point_map(vpm));
   if(!(area > 0.) || !(longest > 0.) || !std::isfinite(area))
-    throw std::invalid_argument("the input has no area to choose a resolution from");
+    throw Bad_input("the input has no area to choose a resolution from");
   const double n = longest * std::sqrt(double(target_vertices) / (internal::marching_cubes_vertex_density * area));
   return int(std::lround((std::min)(1024., (std::max)(1., n))));
 }
 
-/// \ingroup PkgNonobtuseRemeshingRef
-/// Remeshes `input` (any triangle mesh: open or closed, any genus, several
-/// components) into `output`, whose every angle lies in [30, 90] degrees,
-/// certified exactly: nonobtuse Marching Cubes (`nonobtuse_marching_cubes()`),
-/// then the removal of bad-valence vertices (`remove_bad_valence_vertices()`),
-/// then deform-to-fit (`deform_to_fit()`). Each stage certifies every
-/// change it makes, so `output` is certified whenever this function
-/// returns, also when the visitor cancels. `output` is cleared first and
-/// has no garbage at the end. If `input` has zero-area faces, the stages
-/// work on a copy from which CGAL's `remove_degenerate_faces()` removed them
-/// (they cannot sign cube corners, and leaving them out would cut the
-/// patches of chapter 4 apart). For levels of detail, pass `output` to
-/// `angle_bounded_decimation_hierarchy()`.
-///
-/// \cgalNamedParamsBegin
-///   \cgalParamNBegin{resolution} cubes along the longest side of the bounding box, in [1, 1024];
-///     default 100 \cgalParamNEnd
-///   \cgalParamNBegin{target_vertices} about this many output vertices; when given and not 0, it
-///     replaces `resolution`. The resolution comes from `resolution_for_target_vertices()`; if the
-///     initial mesh misses the target by more than 10%, it is rebuilt once at the resolution scaled
-///     by the square root of the ratio (and the first one kept if that fails) \cgalParamNEnd
-///   \cgalParamNBegin{sign_source} corner signs of the Marching Cubes; default `Sign_source::patches` \cgalParamNEnd
-///   \cgalParamNBegin{valence_cleanup} run the removal of bad-valence vertices; default true \cgalParamNEnd
-///   \cgalParamNBegin{vertex_split} see `remove_bad_valence_vertices()`; default true \cgalParamNEnd
-///   \cgalParamNBegin{stop_after} the last stage to run; default `Remeshing_stage::fit` \cgalParamNEnd
-///   \cgalParamNBegin{alpha, drum_subdivisions, quadric_rings, smoothing_steps, fit_tolerance,
-///     max_moves, max_seconds, lazy_evaluation, early_smoothing, tangential_smoothing,
-///     attract_features} see `deform_to_fit()` (the drum subdivisions serve the valence stage
-///     too) \cgalParamNEnd
-///   \cgalParamNBegin{remeshing_visitor} progress and cancellation, see `Default_remeshing_visitor`
-///     (pass `std::ref(visitor)` to keep its state); it sees the fit's progress, so a `fit_visitor`
-///     among the parameters is not used \cgalParamNEnd
-/// \cgalNamedParamsEnd
-///
-/// Throws std::invalid_argument if a parameter is out of range, if `input`
-/// is not a non-empty triangle mesh with some size, or if its initial mesh
-/// is empty (an input too small or too thin for the resolution); `output`
-/// is then empty, as after any exception.
-template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Nonobtuse_remeshing_statistics nonobtuse_remesh(const TriangleMesh& input, TriangleMesh& output,
-                                                const NamedParameters& np = CGAL::parameters::default_values())
+namespace internal {
+
+// The pipeline of nonobtuse_remesh() on meshes whose points are in their
+// internal point maps (any vertex_point_map in `np` is not used).
+template <typename TriangleMesh, typename NamedParameters>
+Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& input, TriangleMesh& output,
+                                                         const NamedParameters& np)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -196,24 +170,24 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh(const TriangleMesh& input, Trian
   };
   clear(output);
   if(num_faces(input) == 0 || !is_triangle_mesh(input))
-    throw std::invalid_argument("nonobtuse_remesh: the input must be a non-empty triangle mesh");
+    throw Bad_input("nonobtuse_remesh: the input must be a non-empty triangle mesh");
 
   Nonobtuse_remeshing_statistics stats;
   const Remeshing_stage last = choose_parameter(get_parameter(np, internal_np::stop_after), Remeshing_stage::fit);
   const bool valence_cleanup = choose_parameter(get_parameter(np, internal_np::valence_cleanup), true);
   const int k = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), 2);
   if(last == Remeshing_stage::valence && !valence_cleanup)
-    throw std::invalid_argument("stopping after the valence stage contradicts skipping it");
+    throw Bad_parameter("stopping after the valence stage contradicts skipping it");
   int rings = 0;
   internal::deform_to_fit_options(np, rings);  // the fit's parameters are checked before any work
   stats.target_vertices = choose_parameter(get_parameter(np, internal_np::target_vertices), std::size_t(0));
   stats.resolution = stats.target_vertices > 0 ? resolution_for_target_vertices(input, stats.target_vertices)
                                                : choose_parameter(get_parameter(np, internal_np::resolution), 100);
   if(stats.resolution < 1 || stats.resolution > 1024)
-    throw std::invalid_argument("the resolution must lie in [1, 1024]");
+    throw Bad_parameter("the resolution must lie in [1, 1024]");
   const Sign_source signs = choose_parameter(get_parameter(np, internal_np::sign_source), Sign_source::patches);
   const double budget = choose_parameter(get_parameter(np, internal_np::memory_budget), default_memory_budget);
-  if(!(budget > 0.)) throw std::invalid_argument("the memory budget must be positive");
+  if(!(budget > 0.)) throw Bad_parameter("the memory budget must be positive");
 
   auto given = choose_parameter(get_parameter(np, internal_np::remeshing_visitor), Default_remeshing_visitor());
   auto& visitor = internal::visitor_reference(given);
@@ -278,7 +252,7 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh(const TriangleMesh& input, Trian
         bool built = true;
         try {
           r = build(redone, second);
-        } catch(const std::invalid_argument&) {
+        } catch(const Bad_input&) {
           built = false;
         }
         if(built && num_faces(second) > 0) {
@@ -293,7 +267,7 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh(const TriangleMesh& input, Trian
     stats.initial_mesh.patch_faces.clear();
     stats.initial_mesh.face_patch.clear();
     if(num_faces(output) == 0)
-      throw std::invalid_argument("the initial mesh is empty: the input is too small or too thin for resolution " +
+      throw Bad_input("the initial mesh is empty: the input is too small or too thin for resolution " +
                                   std::to_string(stats.resolution));
     visitor.stage_finished(Remeshing_stage::initial_mesh, seconds_since(stage_start));
     if(last == Remeshing_stage::initial_mesh) return finish();
@@ -319,7 +293,9 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh(const TriangleMesh& input, Trian
     visitor.stage_started(Remeshing_stage::fit);
     stage_start = Clock::now();
     internal::Fit_progress_relay<std::remove_reference_t<decltype(visitor)> > relay{&visitor};
-    stats.fit = deform_to_fit(output, *surface, parameters::combine(np, parameters::fit_visitor(std::ref(relay))));
+    stats.fit = deform_to_fit(output, *surface,
+                              parameters::combine(np, parameters::fit_visitor(std::ref(relay)),
+                                                  CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, output))));
     stats.fit_run = true;
     if(stats.fit.cancelled) stats.cancelled = true;
     visitor.stage_finished(Remeshing_stage::fit, seconds_since(stage_start));
@@ -327,6 +303,81 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh(const TriangleMesh& input, Trian
   } catch(...) {
     clear(output);
     throw;
+  }
+}
+
+} // namespace internal
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Remeshes `input` (any triangle mesh: open or closed, any genus, several
+/// components) into `output`, whose every angle lies in [30, 90] degrees,
+/// certified exactly: nonobtuse Marching Cubes (`nonobtuse_marching_cubes()`),
+/// then the removal of bad-valence vertices (`remove_bad_valence_vertices()`),
+/// then deform-to-fit (`deform_to_fit()`). Each stage certifies every
+/// change it makes, so `output` is certified whenever this function
+/// returns, also when the visitor cancels. `output` is cleared first and
+/// has no garbage at the end. If `input` has zero-area faces, the stages
+/// work on a copy from which CGAL's `remove_degenerate_faces()` removed them
+/// (they cannot sign cube corners, and leaving them out would cut the
+/// patches of chapter 4 apart). For levels of detail, pass `output` to
+/// `angle_bounded_decimation_hierarchy()`.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{resolution} cubes along the longest side of the bounding box, in [1, 1024];
+///     default 100 \cgalParamNEnd
+///   \cgalParamNBegin{target_vertices} about this many output vertices; when given and not 0, it
+///     replaces `resolution`. The resolution comes from `resolution_for_target_vertices()`; if the
+///     initial mesh misses the target by more than 10%, it is rebuilt once at the resolution scaled
+///     by the square root of the ratio (and the first one kept if that fails) \cgalParamNEnd
+///   \cgalParamNBegin{sign_source} corner signs of the Marching Cubes; default `Sign_source::patches` \cgalParamNEnd
+///   \cgalParamNBegin{memory_budget} see `nonobtuse_marching_cubes()` \cgalParamNEnd
+///   \cgalParamNBegin{valence_cleanup} run the removal of bad-valence vertices; default true \cgalParamNEnd
+///   \cgalParamNBegin{vertex_split} see `remove_bad_valence_vertices()`; default true \cgalParamNEnd
+///   \cgalParamNBegin{stop_after} the last stage to run; default `Remeshing_stage::fit` \cgalParamNEnd
+///   \cgalParamNBegin{alpha, drum_subdivisions, quadric_rings, smoothing_steps, fit_tolerance,
+///     max_moves, max_seconds, lazy_evaluation, early_smoothing, tangential_smoothing,
+///     attract_features} see `deform_to_fit()` (the drum subdivisions serve the valence stage
+///     too) \cgalParamNEnd
+///   \cgalParamNBegin{remeshing_visitor} progress and cancellation, see `Default_remeshing_visitor`
+///     (pass `std::ref(visitor)` to keep its state); it sees the fit's progress, so a `fit_visitor`
+///     among the parameters is not used \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map} the points of `input`; default its internal point map \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// `np_out` may hold the `vertex_point_map` of `output`. When either map is given, the stages
+/// run on copies whose points are in their internal point maps, and the result is copied
+/// into `output` through its map. The points must have double coordinates (see
+/// `deform_to_fit()`).
+///
+/// Throws `Bad_parameter` if a parameter is out of range, and `Bad_input` if
+/// `input` is not a non-empty triangle mesh with some size or if its initial
+/// mesh is empty (an input too small or too thin for the resolution) or over
+/// the memory budget (`Memory_budget_exceeded`); `output` is then empty, as
+/// after any exception.
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters,
+          typename OutputNamedParameters = CGAL::parameters::Default_named_parameters>
+Nonobtuse_remeshing_statistics nonobtuse_remesh(const TriangleMesh& input, TriangleMesh& output,
+                                                const NamedParameters& np = CGAL::parameters::default_values(),
+                                                const OutputNamedParameters& np_out = CGAL::parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::vertex_point_t>::value &&
+               CGAL::parameters::is_default_parameter<OutputNamedParameters, CGAL::internal_np::vertex_point_t>::value) {
+    return internal::nonobtuse_remesh_pipeline(input, output, np);
+  } else {
+    TriangleMesh in, out;
+    copy_face_graph(input, in,
+                    CGAL::parameters::vertex_point_map(choose_parameter(
+                        get_parameter(np, CGAL::internal_np::vertex_point),
+                        get_const_property_map(CGAL::vertex_point, input))));
+    clear(output);
+    const Nonobtuse_remeshing_statistics stats = internal::nonobtuse_remesh_pipeline(in, out, np);
+    copy_face_graph(out, output, CGAL::parameters::default_values(),
+                    CGAL::parameters::vertex_point_map(choose_parameter(
+                        get_parameter(np_out, CGAL::internal_np::vertex_point),
+                        get_property_map(CGAL::vertex_point, output))));
+    return stats;
   }
 }
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Named parameters of the Nonobtuse_remeshing package.
 //
 // CGAL 5.5's Named_function_parameters accepts any type as a tag, so the package

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Quality report of a triangle mesh: angles (certified exactly), valences,
 // topology, defects, and the distance to a reference mesh.
 
@@ -5,6 +7,7 @@
 #define CGAL_NONOBTUSE_REMESHING_QUALITY_REPORT_H
 
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
+#include <CGAL/Nonobtuse_remeshing/exceptions.h>
 #include <CGAL/Nonobtuse_remeshing/internal/angle_predicates.h>
 #include <CGAL/Nonobtuse_remeshing/parameters.h>
 
@@ -137,7 +140,7 @@ Distance_report distance_report(const TriangleMesh& mesh, const TriangleMesh& re
   Distance_report r;
   r.reference_diagonal = bbox_diagonal(reference);
   if(!(r.reference_diagonal > 0.))
-    throw std::invalid_argument("the reference mesh has a zero-size bounding box");
+    throw Bad_input("the reference mesh has a zero-size bounding box");
   const double scale = r.reference_diagonal > 0. ? 100. / r.reference_diagonal : 0.;
   const double error = relative_error * r.reference_diagonal;
   r.hausdorff_to_reference =
@@ -177,8 +180,9 @@ struct Counting_iterator
 /// `CGAL::Surface_mesh` or any model of `FaceListGraph`). If `reference` is
 /// not null, the distances to it are computed too.
 ///
-/// \pre `mesh` and `reference` are triangle meshes; the reference's bounding
-/// box is not a point (std::invalid_argument is thrown otherwise).
+/// Throws `Bad_parameter` for a parameter out of range, and `Bad_input`
+/// unless `mesh` and `reference` are triangle meshes and the reference's
+/// bounding box is not a point.
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{min_angle, max_angle} the bounds to certify (default 30, 90) \cgalParamNEnd
@@ -198,6 +202,12 @@ Quality_report quality_report(const TriangleMesh& mesh,
   using parameters::get_parameter;
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  const std::size_t cap =
+      choose_parameter(get_parameter(np, internal_np::maximum_self_intersections), std::size_t(1000));
+  if(cap < 1 || cap >= (std::numeric_limits<unsigned>::max)())
+    throw Bad_parameter("maximum_self_intersections must be between 1 and 2^32 - 2");
+  const double hausdorff_error = choose_parameter(get_parameter(np, internal_np::hausdorff_relative_error), 1e-4);
+  if(!(hausdorff_error > 0.)) throw Bad_parameter("the Hausdorff error bound must be positive");
 
   Quality_report r;
   r.vertices = vertices(mesh).size();  // live elements: num_*() of a Surface_mesh count removed ones
@@ -240,10 +250,7 @@ Quality_report quality_report(const TriangleMesh& mesh,
   r.connected_components =
       PMP::connected_components(mesh, boost::make_assoc_property_map(component));
 
-  r.self_intersections_cap = choose_parameter(get_parameter(np, internal_np::maximum_self_intersections),
-                                              std::size_t(1000));
-  if(r.self_intersections_cap < 1 || r.self_intersections_cap >= (std::numeric_limits<unsigned>::max)())
-    throw std::invalid_argument("maximum_self_intersections must be between 1 and 2^32 - 2");
+  r.self_intersections_cap = cap;
   // ask for one more than the cap: finding it is what proves the cap was hit
   PMP::self_intersections(faces(mesh), mesh, internal::Counting_iterator{&r.self_intersections},
                           CGAL::parameters::maximum_number(unsigned(r.self_intersections_cap + 1)));
@@ -252,9 +259,7 @@ Quality_report quality_report(const TriangleMesh& mesh,
 
   r.bbox_diagonal = internal::bbox_diagonal(mesh);
   if(reference != nullptr)
-    r.distance = internal::distance_report(
-        mesh, *reference,
-        choose_parameter(get_parameter(np, internal_np::hausdorff_relative_error), 1e-4));
+    r.distance = internal::distance_report(mesh, *reference, hausdorff_error);
   return r;
 }
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Removal of bad-valence vertices before deform-to-fit (thesis, section 5.7),
 // and vertex splits for those that removal cannot reach (its chapter 8).
 
@@ -5,6 +7,7 @@
 #define CGAL_NONOBTUSE_REMESHING_REMOVE_BAD_VALENCE_VERTICES_H
 
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
+#include <CGAL/Nonobtuse_remeshing/exceptions.h>
 #include <CGAL/Nonobtuse_remeshing/internal/Bad_valence_removal.h>
 #include <CGAL/Nonobtuse_remeshing/parameters.h>
 
@@ -43,8 +46,8 @@ namespace Nonobtuse_remeshing {
 ///   \cgalParamNBegin{vertex_point_map} default: the mesh's \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// Throws std::invalid_argument, leaving `mesh` unchanged, if `mesh` is not a
-/// triangle mesh certified in [30, 90] degrees or k is out of range.
+/// Throws, leaving `mesh` unchanged, `Bad_parameter` if k is out of range and
+/// `Bad_input` if `mesh` is not a triangle mesh certified in [30, 90] degrees.
 template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Bad_valence_removal_statistics remove_bad_valence_vertices(TriangleMesh& mesh,
                                                            const NamedParameters& np = CGAL::parameters::default_values())
@@ -56,10 +59,10 @@ Bad_valence_removal_statistics remove_bad_valence_vertices(TriangleMesh& mesh,
   const int k = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), 2);
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_property_map(CGAL::vertex_point, mesh));
-  if(k < 1 || k > 16) throw std::invalid_argument("the drum subdivisions k must lie in [1, 16]");
-  if(!is_triangle_mesh(mesh)) throw std::invalid_argument("remove_bad_valence_vertices: not a triangle mesh");
+  if(k < 1 || k > 16) throw Bad_parameter("the drum subdivisions k must lie in [1, 16]");
+  if(!is_triangle_mesh(mesh)) throw Bad_input("remove_bad_valence_vertices: not a triangle mesh");
   if(!certify_angle_bounds(mesh, CGAL::parameters::vertex_point_map(vpm)).is_certified())
-    throw std::invalid_argument("remove_bad_valence_vertices needs a mesh certified in [30, 90] degrees");
+    throw Bad_input("remove_bad_valence_vertices needs a mesh certified in [30, 90] degrees");
 
   Bad_valence_removal_statistics stats;
   stats.before = count_bad_valences(mesh);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Angle-bounded decimation (thesis, chapter 6): the initial quadrics
 // (equations 5.10 and 6.3), the stop predicate (the targets, early
 // termination of 6.5, cancellation) and the runs of CGAL's edge_collapse with
@@ -78,10 +80,10 @@ public:
   // `sink(i, true, stats)` when the count reaches targets[i], and
   // `sink(i, false, stats)` for the first target not reached, if the
   // decimation stops before it. `reference` is the full mesh, the target of
-  // the relaxation.
-  template <typename Sink>
+  // the relaxation, with its points in `reference_points`.
+  template <typename ReferencePointMap, typename Sink>
   Angle_bounded_decimation_statistics run(const std::vector<std::size_t>& targets, const TriangleMesh& reference,
-                                          Sink sink)
+                                          ReferencePointMap reference_points, Sink sink)
   {
     start_ = std::chrono::steady_clock::now();
     targets_ = targets;
@@ -103,7 +105,7 @@ public:
     Quadric_visitor<TriangleMesh, Context, Self> visitor(&context_, this);
     const Stop stop{this};
     ceiling_ = options_.relaxation ? (std::min)(options_.first_ceiling, options_.max_error) : options_.max_error;
-    std::unique_ptr<Closest_triangle<TriangleMesh> > closest;
+    std::unique_ptr<Closest_triangle<TriangleMesh, ReferencePointMap> > closest;
     for(int round = 0; reach_levels() && round < options_.max_rounds; ++round) {
       ++stats_.rounds;
       const std::size_t before = stats_.collapses;
@@ -123,7 +125,10 @@ public:
       if(!below_max_error && (removed == 0 || removed < enough)) break;
       if(below_max_error) ceiling_ = (std::min)(2. * ceiling_, options_.max_error);
       if(!options_.relaxation) break;
-      if(removed > 0) relax(reference, closest);
+      if(removed > 0) {
+        if(!closest) closest.reset(new Closest_triangle<TriangleMesh, ReferencePointMap>(reference, reference_points, 0));
+        relax(*closest);
+      }
       if(stats_.stop_reason == Decimation_stop_reason::cancelled) break;
     }
     if(!reach_levels()) stats_.stop_reason = Decimation_stop_reason::target_reached;
@@ -142,13 +147,14 @@ public:
 private:
   // Deform-to-fit of the decimated mesh to the full one (certified after
   // every move, connectivity unchanged); the quadrics stay.
-  void relax(const TriangleMesh& reference, std::unique_ptr<Closest_triangle<TriangleMesh> >& closest)
+  template <typename Input>
+  void relax(const Input& closest)
   {
-    if(!closest) closest.reset(new Closest_triangle<TriangleMesh>(reference, 0));
     Deform_to_fit_options o;
     o.tolerance = options_.relaxation_tolerance;
     Relaxation_visitor fit_visitor{this};
-    Deform_to_fit<TriangleMesh, Relaxation_visitor> fit(mesh_, *closest, context_.diagonal, o, fit_visitor);
+    Deform_to_fit<TriangleMesh, VertexPointMap, Input, Relaxation_visitor> fit(mesh_, vpm_, closest,
+                                                                              context_.diagonal, o, fit_visitor);
     const Deform_to_fit_statistics f = fit.run();
     ++stats_.relaxations;
     stats_.relaxation_moves += f.moves;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Removal of bad-valence vertices (thesis, section 5.7, cases (a)-(g) of its
 // Figure 5.6), followed by vertex splits for what removal cannot reach
 // (chapter 8's future work). Every operation is checked for manifoldness
@@ -12,6 +14,7 @@
 #include <CGAL/Nonobtuse_remeshing/internal/feasible_region.h>
 #include <CGAL/Nonobtuse_remeshing/internal/small_qp.h>
 #include <CGAL/Nonobtuse_remeshing/internal/vertex_split.h>
+#include <CGAL/Nonobtuse_remeshing/statistics.h>
 
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -27,58 +30,6 @@
 
 namespace CGAL {
 namespace Nonobtuse_remeshing {
-
-/// \ingroup PkgNonobtuseRemeshingRef
-/// Bad-valence vertices (thesis, section 5.7 and Table 7.1): interior
-/// vertices of valence below 5 or above 11 and border vertices of valence
-/// below 4 cannot lie flat with every angle in [30, 90] degrees.
-struct Valence_counts
-{
-  std::size_t valence_2 = 0;                  ///< v2 of Table 7.1 (border vertices; interior ones too, if any)
-  std::size_t border_valence_3 = 0;           ///< of v3
-  std::size_t interior_valence_3 = 0;         ///< of v3
-  std::size_t interior_valence_4 = 0;         ///< int-v4
-  std::size_t interior_valence_above_11 = 0;  ///< none in a Marching Cubes mesh (its maximum is 10)
-  std::size_t valence_3() const { return border_valence_3 + interior_valence_3; }
-  std::size_t total() const { return valence_2 + valence_3() + interior_valence_4 + interior_valence_above_11; }
-};
-
-/// \ingroup PkgNonobtuseRemeshingRef
-/// Counts the bad-valence vertices of `mesh`.
-template <typename TriangleMesh>
-Valence_counts count_bad_valences(const TriangleMesh& mesh)
-{
-  Valence_counts c;
-  for(auto v : vertices(mesh)) {
-    const std::size_t d = degree(v, mesh);
-    const bool border = bool(is_border(v, mesh));
-    if(d <= 2) ++c.valence_2;
-    else if(d == 3) ++(border ? c.border_valence_3 : c.interior_valence_3);
-    else if(d == 4 && !border) ++c.interior_valence_4;
-    else if(d > 11 && !border) ++c.interior_valence_above_11;
-  }
-  return c;
-}
-
-/// \ingroup PkgNonobtuseRemeshingRef
-/// Statistics of `remove_bad_valence_vertices()`: the counts before and
-/// after, and the operations done, by case of the thesis's Figure 5.6.
-struct Bad_valence_removal_statistics
-{
-  Valence_counts before, after;
-  std::size_t vertices_before = 0, vertices_after = 0;
-  std::size_t border_valence_2_discarded = 0;    ///< case (a)
-  std::size_t interior_valence_3_discarded = 0;  ///< case (b)
-  std::size_t interior_valence_4_discarded = 0;  ///< case (c)
-  std::size_t interior_valence_4_collapsed = 0;  ///< case (d)
-  std::size_t border_valence_3_discarded = 0;    ///< case (e)
-  std::size_t border_valence_3_collapsed = 0;    ///< cases (f) and (g)
-  std::size_t border_teeth_removed = 0;          ///< valence-2 and valence-3 border pairs, beyond the thesis
-  std::size_t splits = 0;                        ///< vertex splits
-  std::size_t refused = 0;  ///< operations allowed by valence but refused by the exact certification
-  std::size_t rounds = 0;   ///< rounds of removal then split
-  double seconds = 0.;
-};
 
 namespace internal {
 

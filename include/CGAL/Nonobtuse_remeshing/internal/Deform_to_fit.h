@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // The deform-to-fit optimizer (thesis, chapter 5): per-vertex quadratic
 // programs over the linearized feasible regions, a greedy queue on the
 // improvement, lazy evaluation, early smoothing and constrained Laplacian
@@ -9,8 +11,10 @@
 
 #include <CGAL/Nonobtuse_remeshing/internal/angle_predicates.h>
 #include <CGAL/Nonobtuse_remeshing/internal/closest_triangle.h>
+#include <CGAL/Nonobtuse_remeshing/internal/epick_points.h>
 #include <CGAL/Nonobtuse_remeshing/internal/feasible_region.h>
 #include <CGAL/Nonobtuse_remeshing/internal/small_qp.h>
+#include <CGAL/Nonobtuse_remeshing/statistics.h>
 
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
@@ -32,40 +36,6 @@
 namespace CGAL {
 namespace Nonobtuse_remeshing {
 
-/// \ingroup PkgNonobtuseRemeshingRef
-/// What `deform_to_fit()` is doing when it calls its visitor.
-enum class Deform_to_fit_stage { optimization, smoothing };
-
-/// \ingroup PkgNonobtuseRemeshingRef
-/// Statistics of `deform_to_fit()`, also handed to its visitor while it runs.
-struct Deform_to_fit_statistics
-{
-  Deform_to_fit_stage stage = Deform_to_fit_stage::optimization;
-  std::size_t vertices = 0;
-  std::size_t feature_samples = 0;    ///< input vertices and sharp or border edge samples attracting the mesh
-  std::size_t moves = 0;              ///< applied moves, optimization and smoothing
-  std::size_t smoothing_moves = 0;    ///< of which by constrained Laplacian smoothing
-  std::size_t qp_solves = 0;
-  std::size_t qp_fallbacks = 0;       ///< the fast solver reported trouble: CGAL's solver answered
-  std::size_t infeasible_regions = 0; ///< evaluations whose F(v) was empty (the vertex stays)
-  std::size_t shortened_moves = 0;    ///< certified only after halving the step
-  std::size_t rejected_moves = 0;     ///< no certified step within five halvings: not moved
-  std::size_t undone_moves = 0;       ///< certified, but no descent once the closest triangle was updated
-  std::size_t full_updates = 0;
-  std::size_t smoothing_passes = 0;
-  std::size_t intersecting_pairs_found = 0;  ///< self-intersecting face pairs after the fit, before untangling
-  std::size_t intersecting_pairs = 0;        ///< self-intersecting face pairs left at the end
-  std::size_t untangling_moves = 0;
-  double rms_distance = 0.;           ///< root mean square distance of the vertices to the input,
-                                      ///< in % of the input's bounding-box diagonal (updated per phase)
-  bool budget_exhausted = false;
-  bool cancelled = false;
-  double optimization_seconds = 0.;
-  double smoothing_seconds = 0.;
-  double untangling_seconds = 0.;
-  double seconds = 0.;
-};
-
 namespace internal {
 
 struct Deform_to_fit_options
@@ -82,19 +52,20 @@ struct Deform_to_fit_options
   bool attract_features = true;
 };
 
-template <typename TriangleMesh, typename Visitor>
+// `Input` is the Closest_triangle of the input surface; the mesh's points
+// are read and written through `VertexPointMap`.
+template <typename TriangleMesh, typename VertexPointMap, typename Input, typename Visitor>
 class Deform_to_fit
 {
-  using Epick = Exact_predicates_inexact_constructions_kernel;
   using Point = Epick::Point_3;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   using Clock = std::chrono::steady_clock;
 
 public:
-  Deform_to_fit(TriangleMesh& mesh, const Closest_triangle<TriangleMesh>& input, double diagonal,
+  Deform_to_fit(TriangleMesh& mesh, VertexPointMap vpm, const Input& input, double diagonal,
                 const Deform_to_fit_options& options, Visitor& visitor)
-    : mesh_(mesh), input_(input), options_(options), visitor_(visitor), diagonal_(diagonal),
+    : mesh_(mesh), vpm_(vpm), points_(epick_points(vpm)), input_(input), options_(options), visitor_(visitor), diagonal_(diagonal),
       threshold_(CGAL::square(options.tolerance * diagonal)),
       index_(get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh))
   {
@@ -104,7 +75,7 @@ public:
     }
     const std::size_t n = vertices_.size();
     hint_.resize(n);
-    for(std::size_t i = 0; i < n; ++i) hint_[i] = input_.closest(mesh_.point(vertices_[i]));
+    for(std::size_t i = 0; i < n; ++i) hint_[i] = input_.closest(point(vertices_[i]));
     target_.resize(n);
     stamp_.assign(n, 0);
     dirty_.assign(n, false);
@@ -119,8 +90,8 @@ public:
       // 1.20% Hausdorff against 1.66%, elephant 0.87% against 1.13%).
       double length = 0.;
       for(auto e : edges(mesh_))
-        length += std::sqrt(CGAL::squared_distance(mesh_.point(source(halfedge(e, mesh_), mesh_)),
-                                                   mesh_.point(target(halfedge(e, mesh_), mesh_))));
+        length += std::sqrt(CGAL::squared_distance(point(source(halfedge(e, mesh_), mesh_)),
+                                                   point(target(halfedge(e, mesh_), mesh_))));
       const double spacing = length / double((std::max)(std::size_t(1), std::size_t(num_edges(mesh_))));
       samples_ = input_.feature_samples(spacing);
     }
@@ -234,7 +205,7 @@ private:
 
   Eigen::Vector3d position(std::size_t i) const
   {
-    const Point& p = mesh_.point(vertices_[i]);
+    const Point& p = point(vertices_[i]);
     return Eigen::Vector3d(p.x(), p.y(), p.z());
   }
 
@@ -256,8 +227,8 @@ private:
         const std::size_t i = get(index_, target(c, mesh_));
         cycle.push_back(i);
         done[i] = true;
-        const Point& p = mesh_.point(target(c, mesh_));
-        longest = (std::max)(longest, std::sqrt(CGAL::squared_distance(p, mesh_.point(source(c, mesh_)))));
+        const Point& p = point(target(c, mesh_));
+        longest = (std::max)(longest, std::sqrt(CGAL::squared_distance(p, point(source(c, mesh_)))));
         farthest = (std::max)(farthest, std::sqrt(CGAL::squared_distance(p, input_.closest_on_border(p))));
       }
       if(farthest <= 2. * longest)
@@ -281,7 +252,7 @@ private:
     std::vector<std::size_t> everywhere, on_border;
     points.reserve(vertices_.size());
     for(std::size_t i = 0; i < vertices_.size(); ++i) {
-      points.push_back(mesh_.point(vertices_[i]));
+      points.push_back(point(vertices_[i]));
       everywhere.push_back(i);
       if(on_input_border_[i]) on_border.push_back(i);
     }
@@ -335,7 +306,7 @@ private:
     const bool border_vertex = bool(is_border(v, mesh_));
     for(auto h : halfedges_around_target(v, mesh_))
       if(!border_vertex || is_border(h, mesh_) || is_border(opposite(h, mesh_), mesh_)) {
-        const Point& p = mesh_.point(source(h, mesh_));
+        const Point& p = point(source(h, mesh_));
         centre += Eigen::Vector3d(p.x(), p.y(), p.z());
         ++count;
       }
@@ -354,7 +325,7 @@ private:
       double w = alpha;
       if(on_input_border_[i]) {
         w /= double(1 + owned);
-        const Point b = input_.closest_on_border(mesh_.point(v));
+        const Point b = input_.closest_on_border(point(v));
         o.points.push_back({Eigen::Vector3d(b.x(), b.y(), b.z()), w, Eigen::Matrix3d::Identity()});
       } else {
         o.quadric = input_.quadric(hint_[i]);
@@ -384,7 +355,7 @@ private:
     f.origin = position(i);
     f.scale = 0.;
     for(vertex_descriptor w : vertices_around_target(halfedge(vertices_[i], mesh_), mesh_)) {
-      const Point& p = mesh_.point(w);
+      const Point& p = point(w);
       f.scale = (std::max)(f.scale, (Eigen::Vector3d(p.x(), p.y(), p.z()) - f.origin).norm());
     }
     return f;
@@ -397,7 +368,7 @@ private:
     const Local_frame f = frame(i);
     region_.clear();
     if(!(f.scale > 0.) ||
-       !vertex_feasible_region(mesh_, mesh_.points(), vertices_[i], options_.drum_subdivisions, f, region_))
+       !vertex_feasible_region(mesh_, points_, vertices_[i], options_.drum_subdivisions, f, region_))
       return false;
     const Objective o = objective(i, goal);
     o.local_form(f, qp_.G, qp_.a);
@@ -475,8 +446,8 @@ private:
     const vertex_descriptor v = vertices_[i];
     for(auto h : halfedges_around_target(v, mesh_)) {
       if(is_border(h, mesh_)) continue;
-      const Point& a = mesh_.point(source(h, mesh_));
-      const Point& b = mesh_.point(target(next(h, mesh_), mesh_));
+      const Point& a = point(source(h, mesh_));
+      const Point& b = point(target(next(h, mesh_), mesh_));
       if(!triangle_verdict(p, b, a, bounds_).within_bounds()) return false;
     }
     return true;
@@ -491,7 +462,7 @@ private:
   bool apply(std::size_t i, const Eigen::Vector3d& target, bool check_descent)
   {
     const Eigen::Vector3d from = position(i);
-    const Point old_point = mesh_.point(vertices_[i]);
+    const Point old_point = point(vertices_[i]);
     Eigen::Vector3d step = target - from;
     for(int attempt = 0; attempt < 5; ++attempt, step *= 0.5) {
       const Eigen::Vector3d to = from + step;
@@ -500,10 +471,10 @@ private:
       if(!certified_at(i, p)) continue;
       const face_descriptor old_hint = hint_[i];
       const double before = check_descent ? objective(i, Goal::fit).value(from) : 0.;
-      mesh_.point(vertices_[i]) = p;
+      put_point(vpm_, vertices_[i], p);
       hint_[i] = input_.closest_near(p, old_hint);
       if(check_descent && !(objective(i, Goal::fit).value(to) < before - threshold_)) {
-        mesh_.point(vertices_[i]) = old_point;
+        put_point(vpm_, vertices_[i], old_point);
         hint_[i] = old_hint;
         ++stats_.undone_moves;
         return false;
@@ -562,7 +533,8 @@ private:
   {
     const Clock::time_point start = Clock::now();
     std::vector<std::pair<face_descriptor, face_descriptor> > pairs;
-    Polygon_mesh_processing::self_intersections(faces(mesh_), mesh_, std::back_inserter(pairs));
+    Polygon_mesh_processing::self_intersections(faces(mesh_), mesh_, std::back_inserter(pairs),
+                                                CGAL::parameters::vertex_point_map(points_).geom_traits(Epick()));
     stats_.intersecting_pairs_found = pairs.size();
     for(int round = 1; round <= 5 && !pairs.empty() && !stats_.budget_exhausted && !stats_.cancelled; ++round) {
       std::vector<bool> chosen(vertices_.size(), false);
@@ -607,7 +579,7 @@ private:
     std::vector<Point> saved;
     std::vector<face_descriptor> saved_hints;
     for(std::size_t i : region) {
-      saved.push_back(mesh_.point(vertices_[i]));
+      saved.push_back(point(vertices_[i]));
       saved_hints.push_back(hint_[i]);
     }
     std::size_t moves = 0;
@@ -619,7 +591,9 @@ private:
         if(solve(i, goal, best, improvement) && improvement > threshold_ && apply(i, best, false)) ++moves;
       }
     std::vector<std::pair<face_descriptor, face_descriptor> > left;
-    Polygon_mesh_processing::self_intersections(faces(mesh_), mesh_, std::back_inserter(left));
+    Polygon_mesh_processing::self_intersections(
+        faces(mesh_), mesh_, std::back_inserter(left),
+        CGAL::parameters::vertex_point_map(points_).geom_traits(Epick()));
     if(left.size() < pairs.size() || (!strictly && left.size() == pairs.size())) {
       const bool removed = left.size() < pairs.size();
       stats_.untangling_moves += moves;
@@ -628,7 +602,7 @@ private:
     }
     stats_.moves -= moves;
     for(std::size_t j = 0; j < region.size(); ++j) {
-      mesh_.point(vertices_[region[j]]) = saved[j];
+      put_point(vpm_, vertices_[region[j]], saved[j]);
       hint_[region[j]] = saved_hints[j];
     }
     return false;
@@ -638,12 +612,16 @@ private:
   {
     double sum = 0.;
     for(std::size_t i = 0; i < vertices_.size(); ++i)
-      sum += CGAL::squared_distance(mesh_.point(vertices_[i]), input_.triangle(hint_[i]));
+      sum += CGAL::squared_distance(point(vertices_[i]), input_.triangle(hint_[i]));
     stats_.rms_distance = vertices_.empty() ? 0. : 100. * std::sqrt(sum / double(vertices_.size())) / diagonal_;
   }
 
+  Point point(vertex_descriptor v) const { return get(points_, v); }
+
   TriangleMesh& mesh_;
-  const Closest_triangle<TriangleMesh>& input_;
+  VertexPointMap vpm_;
+  Epick_points_t<VertexPointMap> points_;
+  const Input& input_;
   const Deform_to_fit_options options_;
   Visitor& visitor_;
   const double diagonal_;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Filtered exact predicates deciding whether the angles of a triangle lie in
 // [min, max], from the double coordinates as stored.
 //
@@ -15,6 +17,8 @@
 
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_ANGLE_PREDICATES_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_ANGLE_PREDICATES_H
+
+#include <CGAL/Nonobtuse_remeshing/exceptions.h>
 
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Uncertain.h>
@@ -95,7 +99,7 @@ public:
     : min_degrees_(min_degrees), max_degrees_(max_degrees)
   {
     if(!(min_degrees >= 0. && max_degrees <= 180. && min_degrees <= max_degrees))
-      throw std::invalid_argument("angle bounds must satisfy 0 <= min <= max <= 180, got [" +
+      throw Bad_parameter("angle bounds must satisfy 0 <= min <= max <= 180, got [" +
                                   std::to_string(min_degrees) + ", " +
                                   std::to_string(max_degrees) + "]");
     lower_ = cosine_bound(min_degrees, true);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // The check every local operation passes before it is applied: each face it
 // creates certifies exactly in the angle bounds, on the doubles that will be
 // stored, and faces the side of the face it replaces (a test in double, a

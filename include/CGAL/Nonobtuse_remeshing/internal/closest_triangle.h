@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // The input surface as deform-to-fit sees it (thesis, section 5.3): the
 // closest input triangle of a point, from a CGAL AABB tree at the start and
 // then by a local search within three rings of the previous one (falling back
@@ -9,6 +11,7 @@
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_CLOSEST_TRIANGLE_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_CLOSEST_TRIANGLE_H
 
+#include <CGAL/Nonobtuse_remeshing/internal/epick_points.h>
 #include <CGAL/Nonobtuse_remeshing/internal/quadric.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -19,6 +22,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 
 #include <Eigen/Dense>
 
@@ -33,27 +37,29 @@ namespace CGAL {
 namespace Nonobtuse_remeshing {
 namespace internal {
 
-template <typename TriangleMesh>
+template <typename TriangleMesh,
+          typename VertexPointMap = typename boost::property_map<TriangleMesh, vertex_point_t>::const_type>
 class Closest_triangle
 {
-  using Epick = Exact_predicates_inexact_constructions_kernel;
   using Point = Epick::Point_3;
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
-  using Face_primitive = AABB_face_graph_triangle_primitive<TriangleMesh>;
+  using Points = Epick_points_t<VertexPointMap>;
+  using Face_primitive = AABB_face_graph_triangle_primitive<TriangleMesh, Points>;
+  using Face_index_map = decltype(get_initialized_face_index_map(std::declval<const TriangleMesh&>()));
   using Face_tree = AABB_tree<AABB_traits<Epick, Face_primitive> >;
   using Segment_iterator = typename std::vector<Epick::Segment_3>::const_iterator;
   using Segment_primitive = AABB_segment_primitive<Epick, Segment_iterator>;
   using Segment_tree = AABB_tree<AABB_traits<Epick, Segment_primitive> >;
 
 public:
-  explicit Closest_triangle(const TriangleMesh& input, int quadric_rings = 1)
-    : input_(input), tree_(faces(input).first, faces(input).second, input), rings_(quadric_rings),
-      mark_(input.num_faces(), 0u)
+  Closest_triangle(const TriangleMesh& input, VertexPointMap vpm, int quadric_rings)
+    : input_(input), points_(epick_points(vpm)), tree_(faces(input).first, faces(input).second, input, points_),
+      rings_(quadric_rings), face_index_(get_initialized_face_index_map(input)), mark_(num_faces(input), 0u)
   {
     tree_.accelerate_distance_queries();
     for(auto h : halfedges(input))
       if(is_border(h, input))
-        border_.emplace_back(input.point(source(h, input)), input.point(target(h, input)));
+        border_.emplace_back(point(source(h, input)), point(target(h, input)));
     if(!border_.empty()) {
       border_tree_.insert(border_.begin(), border_.end());
       border_tree_.accelerate_distance_queries();
@@ -80,7 +86,7 @@ public:
       stamp_ = 1;
     }
     std::vector<face_descriptor> ring = {hint}, next;
-    mark_[std::size_t(hint)] = stamp_;
+    mark_[get(face_index_, hint)] = stamp_;
     std::size_t visited = 1;
     face_descriptor best = hint;
     double best_distance = squared_distance(p, triangle(hint));
@@ -90,9 +96,9 @@ public:
       for(face_descriptor f : ring)
         for(auto v : vertices_around_face(halfedge(f, input_), input_))
           for(face_descriptor g : faces_around_target(halfedge(v, input_), input_)) {
-            if(g == boost::graph_traits<TriangleMesh>::null_face() || mark_[std::size_t(g)] == stamp_) continue;
+            if(g == boost::graph_traits<TriangleMesh>::null_face() || mark_[get(face_index_, g)] == stamp_) continue;
             if(++visited > ring_budget) return closest(p, best);
-            mark_[std::size_t(g)] = stamp_;
+            mark_[get(face_index_, g)] = stamp_;
             next.push_back(g);
             const double d = squared_distance(p, triangle(g));
             if(d < best_distance) { best_distance = d; best = g; best_ring = r; }
@@ -130,7 +136,7 @@ public:
     for(face_descriptor g : chosen) {
       const Eigen::Vector3d unit = normal(g);
       if(unit.isZero()) continue;  // degenerate: no plane
-      const Point& p = input_.point(target(halfedge(g, input_), input_));
+      const Point& p = point(target(halfedge(g, input_), input_));
       q.add_plane(unit, -unit.dot(Eigen::Vector3d(p.x(), p.y(), p.z())));
     }
     return q;
@@ -155,15 +161,15 @@ public:
         continue;
       put(feature, source(h, input_), true);
       put(feature, target(h, input_), true);
-      const Point& a = input_.point(source(h, input_));
-      const Point& b = input_.point(target(h, input_));
+      const Point& a = point(source(h, input_));
+      const Point& b = point(target(h, input_));
       const double length = std::sqrt(CGAL::squared_distance(a, b));
       const int pieces = int((std::min)(std::ceil(length / spacing), 1e6));
       for(int i = 1; i < pieces; ++i) along.emplace_back(a + (b - a) * (double(i) / pieces), on_border);
     }
     for(auto v : vertices(input_))
       (get(feature, v) ? corners : others)
-          .emplace_back(input_.point(v), CGAL::is_border(v, input_) != boost::none);
+          .emplace_back(point(v), CGAL::is_border(v, input_) != boost::none);
     std::set<std::array<double, 4> > cells;
     std::vector<std::pair<Point, bool> > samples;
     for(const auto* group : {&corners, &along, &others})
@@ -189,17 +195,21 @@ public:
   /// Closest point on the input's border (thesis, equation 5.12).
   Point closest_on_border(const Point& p) const { return border_tree_.closest_point(p); }
 
+  Point point(typename boost::graph_traits<TriangleMesh>::vertex_descriptor v) const { return get(points_, v); }
+
   Epick::Triangle_3 triangle(face_descriptor f) const
   {
     const auto h = halfedge(f, input_);
-    return Epick::Triangle_3(input_.point(source(h, input_)), input_.point(target(h, input_)),
-                             input_.point(target(next(h, input_), input_)));
+    return Epick::Triangle_3(point(source(h, input_)), point(target(h, input_)),
+                             point(target(next(h, input_), input_)));
   }
 
 private:
   const TriangleMesh& input_;
+  Points points_;
   Face_tree tree_;
   int rings_;
+  Face_index_map face_index_;
   // faces visited by closest_near (three rings of a regular mesh hold about
   // 80 faces, at most 171 on the shipped meshes)
   static constexpr std::size_t ring_budget = 256;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // The policies of angle-bounded decimation (thesis, chapter 6) for CGAL's
 // Surface_mesh_simplification::edge_collapse, which stays the engine:
 //   placement  w* = argmin Q_u + Q_v over F(u, v) (equations 6.1, 6.2, 6.4),
@@ -21,6 +23,7 @@
 #include <CGAL/Nonobtuse_remeshing/internal/feasible_region.h>
 #include <CGAL/Nonobtuse_remeshing/internal/quadric.h>
 #include <CGAL/Nonobtuse_remeshing/internal/small_qp.h>
+#include <CGAL/Nonobtuse_remeshing/statistics.h>
 
 #include <CGAL/Surface_mesh_simplification/Edge_collapse_visitor_base.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -36,39 +39,6 @@
 
 namespace CGAL {
 namespace Nonobtuse_remeshing {
-
-/// \ingroup PkgNonobtuseRemeshingRef
-/// Why a decimation stopped.
-enum class Decimation_stop_reason {
-  target_reached,    ///< the target vertex count (the last level's) was reached
-  max_error,         ///< the cheapest collapse left would exceed `max_error` (thesis, 6.5)
-  no_collapse_left,  ///< no collapse left keeps the bounds, the valence floor and the topology
-  round_limit,       ///< 64 rounds of collapses and relaxation ran
-  cancelled          ///< the visitor returned false
-};
-
-/// \ingroup PkgNonobtuseRemeshingRef
-/// Statistics of `angle_bounded_decimation()`. Distances are fractions of
-/// the bounding-box diagonal of the mesh being decimated.
-struct Angle_bounded_decimation_statistics
-{
-  std::size_t vertices_before = 0, vertices_after = 0, target_vertices = 0;
-  std::size_t collapses = 0;
-  std::size_t qp_solves = 0;      ///< QPs of the placements (equation 6.4): a drum-free pre-test, then F(u, v)
-  std::size_t qp_fallbacks = 0;   ///< solves handed to CGAL's QP solver by the fast path
-  std::size_t empty_regions = 0;  ///< placements refused: F(u, v) empty or degenerate
-  std::size_t valence_refusals = 0;        ///< placements and collapses refused by the valence floor (attempts)
-  std::size_t certification_refusals = 0;  ///< collapses refused by the exact certification (attempts)
-  std::size_t topology_refusals = 0;       ///< collapses refused by CGAL's topology tests (its fold test reports none)
-  std::size_t rounds = 0;            ///< runs of edge_collapse
-  std::size_t relaxations = 0;       ///< deform-to-fit runs between rounds
-  std::size_t relaxation_moves = 0;  ///< certified moves made by them
-  double relaxation_seconds = 0.;
-  double largest_collapse_error = 0.;  ///< sqrt of the largest cost collapsed
-  double stopping_error = 0.;          ///< sqrt of the cheapest cost left when the last round stopped at its ceiling
-  Decimation_stop_reason stop_reason = Decimation_stop_reason::no_collapse_left;
-  double seconds = 0.;
-};
 
 namespace internal {
 

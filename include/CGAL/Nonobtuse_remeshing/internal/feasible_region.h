@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // The linearized feasible region of a vertex (thesis, sections 5.1-5.2) and
 // of an edge collapse (equations 6.1-6.2): a convex polyhedron of positions
 // where every triangle around the vertex keeps its angles in [30, 90]

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // The cubical grid of the nonobtuse Marching Cubes (thesis, section 4.2),
 // chosen so that every output coordinate is exact in double.
 //
@@ -16,6 +18,8 @@
 
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_GRID_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_GRID_H
+
+#include <CGAL/Nonobtuse_remeshing/exceptions.h>
 
 #include <CGAL/Bbox_3.h>
 
@@ -37,15 +41,15 @@ public:
   Grid(const Bbox_3& box, int resolution, const PointRange& points)
   {
     if(resolution < 1 || resolution > 1024)
-      throw std::invalid_argument("resolution must be between 1 and 1024, got " + std::to_string(resolution));
+      throw Bad_parameter("resolution must be between 1 and 1024, got " + std::to_string(resolution));
     const double extent = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
     if(!(extent > 0.) || !std::isfinite(extent))
-      throw std::invalid_argument("the input's bounding box is flat or not finite");
+      throw Bad_input("the input's bounding box is flat or not finite");
     // The sign votes and the fit's distances are products of up to six
     // coordinate differences in double: keep them far from overflow and
     // underflow.
     if(extent < 1e-30 || extent > 1e30)
-      throw std::invalid_argument("the input's size is outside the supported range [1e-30, 1e30]: scale it");
+      throw Bad_input("the input's size is outside the supported range [1e-30, 1e30]: scale it");
     int exponent;
     const double fraction = std::frexp(extent / resolution, &exponent);  // in [0.5, 1)
     const int e = exponent - 8;
@@ -53,7 +57,7 @@ public:
     h_ = std::ldexp(m, e);
     const double unit = std::ldexp(1., e - 10);  // every coordinate is an integer times this
     if(!(unit > 1e-290))
-      throw std::invalid_argument("the input is too small to be meshed exactly in double");
+      throw Bad_input("the input is too small to be meshed exactly in double");
     std::size_t best_on_planes = std::size_t(-1);
     for(int attempt = 0; attempt < 8; ++attempt) {
       place(box, m, e, attempt);
@@ -74,7 +78,7 @@ public:
     for(int a = 0; a < 3; ++a)
       if(std::abs(origin_[a]) >= std::ldexp(unit, 52) ||
          std::abs(origin_[a] + cubes_[a] * h_) >= std::ldexp(unit, 52))
-        throw std::invalid_argument("the input lies too far from the origin for its size to be meshed "
+        throw Bad_input("the input lies too far from the origin for its size to be meshed "
                                     "exactly in double: translate it closer to the origin");
   }
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // The nonobtuse Marching Cubes table (thesis, section 4.1), derived rather
 // than typed in: for each of the 256 sign configurations, the contour cycles
 // are built on the cube faces, and each cycle is triangulated, with or
@@ -13,13 +15,13 @@
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_MARCHING_CUBES_TABLE_H
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/assertions.h>
 #include <CGAL/intersections.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <functional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -316,7 +318,7 @@ inline std::vector<std::vector<int> > contour_cycles(unsigned config)
   for(int start = 0; start < 12; ++start) {
     if(used[start] || neighbours[start].empty()) continue;
     if(neighbours[start].size() != 2)
-      throw std::logic_error("nonobtuse marching cubes: contour vertex without two segments");
+      CGAL_error_msg("nonobtuse marching cubes: contour vertex without two segments");
     std::vector<int> cycle;
     int previous = -1, current = start;
     while(!used[current]) {
@@ -339,19 +341,16 @@ inline Entry generate_entry(unsigned config)
   for(const auto& cycle : cycles) {
     Cycle_triangulation t;
     if(!triangulate_cycle(config, cycle, t))
-      throw std::logic_error("nonobtuse marching cubes: no well-shaped triangulation for configuration " +
-                             std::to_string(config));
+      CGAL_error_msg(("nonobtuse marching cubes: no well-shaped triangulation for configuration " + std::to_string(config)).c_str());
     if(t.uses_centre) {
       if(centre_taken)
-        throw std::logic_error("nonobtuse marching cubes: two cycles need the centre in configuration " +
-                               std::to_string(config));
+        CGAL_error_msg(("nonobtuse marching cubes: two cycles need the centre in configuration " + std::to_string(config)).c_str());
       centre_taken = true;
     }
     entry.triangles.insert(entry.triangles.end(), t.triangles.begin(), t.triangles.end());
   }
   if(!embedded(entry.triangles))
-    throw std::logic_error("nonobtuse marching cubes: overlapping cycles in configuration " +
-                           std::to_string(config));
+    CGAL_error_msg(("nonobtuse marching cubes: overlapping cycles in configuration " + std::to_string(config)).c_str());
   return entry;
 }
 

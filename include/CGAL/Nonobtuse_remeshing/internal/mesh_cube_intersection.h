@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Phase 1 of the nonobtuse Marching Cubes (thesis, section 4.2.1): every grid
 // cube that intersects an input triangle, with the list of those triangles.
 //
@@ -10,6 +12,7 @@
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_MESH_CUBE_INTERSECTION_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_MESH_CUBE_INTERSECTION_H
 
+#include <CGAL/Nonobtuse_remeshing/internal/epick_points.h>
 #include <CGAL/Nonobtuse_remeshing/internal/grid.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -25,8 +28,6 @@
 namespace CGAL {
 namespace Nonobtuse_remeshing {
 namespace internal {
-
-using Epick = Exact_predicates_inexact_constructions_kernel;
 
 /// Cubes met by the input, sorted by id, each with its sorted triangle list.
 struct Cube_triangles

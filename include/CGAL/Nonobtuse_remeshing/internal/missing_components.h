@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Input components that do not appear in a remeshed output (beyond the
 // thesis): a connected component of the input is missing when none of its
 // vertices lies within `distance` of the output, typically because it is

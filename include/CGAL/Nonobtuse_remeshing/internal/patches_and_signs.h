@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Phase 2 of the nonobtuse Marching Cubes (thesis, section 4.2.2): the
 // triangles met by a cube are grouped into edge-connected patches, and each
 // patch gives the cube's eight corners a sign of its own.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Quadric error: a sum of squared distances to planes (Garland and Heckbert;
 // the thesis's equation 5.10) and, for border vertices in decimation, to
 // points (equation 6.3). Additive, so a collapsed vertex takes the sum of

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // The per-vertex quadratic program of deform-to-fit (thesis, equation 5.15)
 // and of the collapse placement (equations 6.1-6.2): three variables,
 //   minimize 1/2 x^T G x + a^T x   subject to   n_i . x >= b_i,

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Bounded polygon-soup readers for OFF, OBJ and PLY, and a size check made
 // before CGAL's STL reader runs (beyond the thesis: input hygiene).
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Phase 3 of the nonobtuse Marching Cubes (thesis, section 4.2.3): the
 // per-patch triangulations of phase 2 share nothing yet; this joins them.
 //

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
 // Vertex split, the operation the thesis's chapter 8 names as the missing
 // tool for bad valences: an interior vertex w with ring r_0 .. r_{d-1}
 // becomes two vertices w1 and w2 joined by an edge, w1 taking the arc

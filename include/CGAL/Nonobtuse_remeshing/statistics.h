@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What the stages report: the statistics of the removal of bad-valence
+// vertices (the thesis's Table 7.1), of deform-to-fit (Table 7.2) and of
+// angle-bounded decimation (chapter 6), also handed to their visitors.
+
+#ifndef CGAL_NONOBTUSE_REMESHING_STATISTICS_H
+#define CGAL_NONOBTUSE_REMESHING_STATISTICS_H
+
+#include <CGAL/boost/graph/helpers.h>
+
+#include <cstddef>
+
+namespace CGAL {
+namespace Nonobtuse_remeshing {
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Bad-valence vertices (thesis, section 5.7 and Table 7.1): interior
+/// vertices of valence below 5 or above 11 and border vertices of valence
+/// below 4 cannot lie flat with every angle in [30, 90] degrees.
+struct Valence_counts
+{
+  std::size_t valence_2 = 0;                  ///< v2 of Table 7.1 (border vertices; interior ones too, if any)
+  std::size_t border_valence_3 = 0;           ///< of v3
+  std::size_t interior_valence_3 = 0;         ///< of v3
+  std::size_t interior_valence_4 = 0;         ///< int-v4
+  std::size_t interior_valence_above_11 = 0;  ///< none in a Marching Cubes mesh (its maximum is 10)
+  std::size_t valence_3() const { return border_valence_3 + interior_valence_3; }
+  std::size_t total() const { return valence_2 + valence_3() + interior_valence_4 + interior_valence_above_11; }
+};
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Counts the bad-valence vertices of `mesh`.
+template <typename TriangleMesh>
+Valence_counts count_bad_valences(const TriangleMesh& mesh)
+{
+  Valence_counts c;
+  for(auto v : vertices(mesh)) {
+    const std::size_t d = degree(v, mesh);
+    const bool border = bool(is_border(v, mesh));
+    if(d <= 2) ++c.valence_2;
+    else if(d == 3) ++(border ? c.border_valence_3 : c.interior_valence_3);
+    else if(d == 4 && !border) ++c.interior_valence_4;
+    else if(d > 11 && !border) ++c.interior_valence_above_11;
+  }
+  return c;
+}
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Statistics of `remove_bad_valence_vertices()`: the counts before and
+/// after, and the operations done, by case of the thesis's Figure 5.6.
+struct Bad_valence_removal_statistics
+{
+  Valence_counts before, after;
+  std::size_t vertices_before = 0, vertices_after = 0;
+  std::size_t border_valence_2_discarded = 0;    ///< case (a)
+  std::size_t interior_valence_3_discarded = 0;  ///< case (b)
+  std::size_t interior_valence_4_discarded = 0;  ///< case (c)
+  std::size_t interior_valence_4_collapsed = 0;  ///< case (d)
+  std::size_t border_valence_3_discarded = 0;    ///< case (e)
+  std::size_t border_valence_3_collapsed = 0;    ///< cases (f) and (g)
+  std::size_t border_teeth_removed = 0;          ///< valence-2 and valence-3 border pairs, beyond the thesis
+  std::size_t splits = 0;                        ///< vertex splits
+  std::size_t refused = 0;  ///< operations allowed by valence but refused by the exact certification
+  std::size_t rounds = 0;   ///< rounds of removal then split
+  double seconds = 0.;
+};
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// What `deform_to_fit()` is doing when it calls its visitor.
+enum class Deform_to_fit_stage { optimization, smoothing };
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Statistics of `deform_to_fit()`, also handed to its visitor while it runs.
+struct Deform_to_fit_statistics
+{
+  Deform_to_fit_stage stage = Deform_to_fit_stage::optimization;
+  std::size_t vertices = 0;
+  std::size_t feature_samples = 0;    ///< input vertices and sharp or border edge samples attracting the mesh
+  std::size_t moves = 0;              ///< applied moves, optimization and smoothing
+  std::size_t smoothing_moves = 0;    ///< of which by constrained Laplacian smoothing
+  std::size_t qp_solves = 0;
+  std::size_t qp_fallbacks = 0;       ///< the fast solver reported trouble: CGAL's solver answered
+  std::size_t infeasible_regions = 0; ///< evaluations whose F(v) was empty (the vertex stays)
+  std::size_t shortened_moves = 0;    ///< certified only after halving the step
+  std::size_t rejected_moves = 0;     ///< no certified step within five halvings: not moved
+  std::size_t undone_moves = 0;       ///< certified, but no descent once the closest triangle was updated
+  std::size_t full_updates = 0;
+  std::size_t smoothing_passes = 0;
+  std::size_t intersecting_pairs_found = 0;  ///< self-intersecting face pairs after the fit, before untangling
+  std::size_t intersecting_pairs = 0;        ///< self-intersecting face pairs left at the end
+  std::size_t untangling_moves = 0;
+  double rms_distance = 0.;           ///< root mean square distance of the vertices to the input,
+                                      ///< in % of the input's bounding-box diagonal (updated per phase)
+  bool budget_exhausted = false;
+  bool cancelled = false;
+  double optimization_seconds = 0.;
+  double smoothing_seconds = 0.;
+  double untangling_seconds = 0.;
+  double seconds = 0.;
+};
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Why a decimation stopped.
+enum class Decimation_stop_reason {
+  target_reached,    ///< the target vertex count (the last level's) was reached
+  max_error,         ///< the cheapest collapse left would exceed `max_error` (thesis, 6.5)
+  no_collapse_left,  ///< no collapse left keeps the bounds, the valence floor and the topology
+  round_limit,       ///< 64 rounds of collapses and relaxation ran
+  cancelled          ///< the visitor returned false
+};
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Statistics of `angle_bounded_decimation()`. Distances are fractions of
+/// the bounding-box diagonal of the mesh being decimated.
+struct Angle_bounded_decimation_statistics
+{
+  std::size_t vertices_before = 0, vertices_after = 0, target_vertices = 0;
+  std::size_t collapses = 0;
+  std::size_t qp_solves = 0;      ///< QPs of the placements (equation 6.4): a drum-free pre-test, then F(u, v)
+  std::size_t qp_fallbacks = 0;   ///< solves handed to CGAL's QP solver by the fast path
+  std::size_t empty_regions = 0;  ///< placements refused: F(u, v) empty or degenerate
+  std::size_t valence_refusals = 0;        ///< placements and collapses refused by the valence floor (attempts)
+  std::size_t certification_refusals = 0;  ///< collapses refused by the exact certification (attempts)
+  std::size_t topology_refusals = 0;       ///< collapses refused by CGAL's topology tests (its fold test reports none)
+  std::size_t rounds = 0;            ///< runs of edge_collapse
+  std::size_t relaxations = 0;       ///< deform-to-fit runs between rounds
+  std::size_t relaxation_moves = 0;  ///< certified moves made by them
+  double relaxation_seconds = 0.;
+  double largest_collapse_error = 0.;  ///< sqrt of the largest cost collapsed
+  double stopping_error = 0.;          ///< sqrt of the cheapest cost left when the last round stopped at its ceiling
+  Decimation_stop_reason stop_reason = Decimation_stop_reason::no_collapse_left;
+  double seconds = 0.;
+};
+
+} // namespace Nonobtuse_remeshing
+} // namespace CGAL
+
+#endif // CGAL_NONOBTUSE_REMESHING_STATISTICS_H
