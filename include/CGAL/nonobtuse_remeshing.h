@@ -27,6 +27,9 @@
 #include <CGAL/Nonobtuse_remeshing/parameters.h>
 #include <CGAL/Nonobtuse_remeshing/exceptions.h>
 #include <CGAL/Nonobtuse_remeshing/statistics.h>
+#include <CGAL/Nonobtuse_remeshing/visitors.h>
+#include <CGAL/Nonobtuse_remeshing/angle_bounds.h>
+#include <CGAL/Nonobtuse_remeshing/read_log.h>
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
 #include <CGAL/Nonobtuse_remeshing/quality_report.h>
 #include <CGAL/Nonobtuse_remeshing/mesh_io.h>
@@ -34,6 +37,8 @@
 #include <CGAL/Nonobtuse_remeshing/remove_bad_valence_vertices.h>
 #include <CGAL/Nonobtuse_remeshing/deform_to_fit.h>
 #include <CGAL/Nonobtuse_remeshing/angle_bounded_decimation.h>
+#include <CGAL/Nonobtuse_remeshing/remeshing_stages.h>
+#include <CGAL/Nonobtuse_remeshing/resolution_for_target_vertices.h>
 #include <CGAL/Nonobtuse_remeshing/nonobtuse_remesh.h>
 #include <CGAL/Nonobtuse_remeshing/angle_pictures.h>
 

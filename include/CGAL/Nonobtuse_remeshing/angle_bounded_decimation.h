@@ -11,6 +11,7 @@
 #include <CGAL/Nonobtuse_remeshing/exceptions.h>
 #include <CGAL/Nonobtuse_remeshing/internal/Angle_bounded_decimation.h>
 #include <CGAL/Nonobtuse_remeshing/parameters.h>
+#include <CGAL/Nonobtuse_remeshing/visitors.h>
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
@@ -27,16 +28,6 @@ namespace CGAL {
 namespace Nonobtuse_remeshing {
 
 /// \ingroup PkgNonobtuseRemeshingRef
-/// Default visitor of `angle_bounded_decimation()`: never cancels. A
-/// visitor has `bool keep_going(const Angle_bounded_decimation_statistics&)`,
-/// called before every collapse; returning false stops the decimation, and
-/// the mesh stays certified.
-struct Default_decimation_visitor
-{
-  bool keep_going(const Angle_bounded_decimation_statistics&) { return true; }
-};
-
-/// \ingroup PkgNonobtuseRemeshingRef
 /// One level of `angle_bounded_decimation_hierarchy()`.
 template <typename TriangleMesh>
 struct Decimation_level
@@ -46,56 +37,6 @@ struct Decimation_level
   bool reached = false;  ///< false: the decimation stopped before the target (see `statistics.stop_reason`)
   Angle_bounded_decimation_statistics statistics;  ///< from the full mesh to this level
 };
-
-namespace internal {
-
-// Reads and checks the parameters shared by both entry points; throws
-// Bad_parameter before anything changes.
-template <typename NamedParameters>
-Angle_bounded_decimation_options decimation_options(const NamedParameters& np)
-{
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  Angle_bounded_decimation_options o;  // its members hold the defaults
-  o.drum_subdivisions = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), o.drum_subdivisions);
-  o.min_interior_valence = choose_parameter(get_parameter(np, internal_np::min_interior_valence), o.min_interior_valence);
-  o.min_border_valence = choose_parameter(get_parameter(np, internal_np::min_border_valence), o.min_border_valence);
-  o.max_error = choose_parameter(get_parameter(np, internal_np::max_error), o.max_error);
-  o.relaxation = choose_parameter(get_parameter(np, internal_np::relaxation), o.relaxation);
-  if(o.drum_subdivisions < 1 || o.drum_subdivisions > 16)
-    throw Bad_parameter("the drum subdivisions k must lie in [1, 16]");
-  if(o.min_interior_valence < 3 || o.min_interior_valence > 12)
-    throw Bad_parameter("the interior valence floor must lie in [3, 12]");
-  if(o.min_border_valence < 2 || o.min_border_valence > 12)
-    throw Bad_parameter("the border valence floor must lie in [2, 12]");
-  if(!(o.max_error > 0.)) throw Bad_parameter("the maximum error must be positive");
-  return o;
-}
-
-// The ratios of a hierarchy's levels; throws Bad_parameter unless they
-// decrease strictly within (0, 1).
-inline void check_level_ratios(const std::vector<double>& ratios)
-{
-  if(ratios.empty()) throw Bad_parameter("the hierarchy needs at least one ratio");
-  for(std::size_t i = 0; i < ratios.size(); ++i)
-    if(!(ratios[i] > 0. && ratios[i] < 1.) || (i > 0 && !(ratios[i] < ratios[i - 1])))
-      throw Bad_parameter("the ratios of the levels must decrease strictly within (0, 1)");
-}
-
-// The bounding-box diagonal of `mesh`, which must be a triangle mesh
-// certified in [30, 90] degrees; throws Bad_input otherwise.
-template <typename TriangleMesh, typename VertexPointMap>
-double certified_mesh_diagonal(const TriangleMesh& mesh, VertexPointMap vpm)
-{
-  if(!is_triangle_mesh(mesh)) throw Bad_input("angle_bounded_decimation: not a triangle mesh");
-  if(!certify_angle_bounds(mesh, CGAL::parameters::vertex_point_map(vpm)).is_certified())
-    throw Bad_input("angle_bounded_decimation needs a mesh certified in [30, 90] degrees");
-  const Bbox_3 box = Polygon_mesh_processing::bbox(mesh, CGAL::parameters::vertex_point_map(vpm));
-  return std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                   CGAL::square(box.zmax() - box.zmin()));
-}
-
-} // namespace internal
 
 /// \ingroup PkgNonobtuseRemeshingRef
 /// Angle-bounded decimation (thesis, chapter 6) of `mesh`, whose angles
@@ -129,19 +70,28 @@ double certified_mesh_diagonal(const TriangleMesh& mesh, VertexPointMap vpm)
 /// coordinates, as in `deform_to_fit()`.
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{target_vertices} vertices to keep; default from `vertex_ratio` \cgalParamNEnd
-///   \cgalParamNBegin{vertex_ratio} fraction of the vertices to keep, in (0, 1]; default 0.5 \cgalParamNEnd
+///   \cgalParamNBegin{target_vertices} vertices to keep; default from `vertex_ratio`
+///     \cgalParamType{`std::size_t`} \cgalParamNEnd
+///   \cgalParamNBegin{vertex_ratio} fraction of the vertices to keep, in (0, 1]; default 0.5
+///     \cgalParamType{`double`} \cgalParamNEnd
 ///   \cgalParamNBegin{max_error} early termination, a fraction of the mesh's bounding-box diagonal;
-///     default none \cgalParamNEnd
+///     default none
+///     \cgalParamType{`double`} \cgalParamNEnd
 ///   \cgalParamNBegin{min_interior_valence} no collapse makes an interior vertex of lower valence;
-///     default 4 \cgalParamNEnd
-///   \cgalParamNBegin{min_border_valence} the same for border vertices; default 3 \cgalParamNEnd
-///   \cgalParamNBegin{drum_subdivisions} k of F(u, v), in [1, 16]; default 2 \cgalParamNEnd
+///     default 4
+///     \cgalParamType{`std::size_t`} \cgalParamNEnd
+///   \cgalParamNBegin{min_border_valence} the same for border vertices; default 3
+///     \cgalParamType{`std::size_t`} \cgalParamNEnd
+///   \cgalParamNBegin{drum_subdivisions} k of F(u, v), in [1, 16]; default 2
+///     \cgalParamType{`int`} \cgalParamNEnd
 ///   \cgalParamNBegin{relaxation} rounds with deform-to-fit between them; false: the thesis's
-///     single greedy run; default true \cgalParamNEnd
+///     single greedy run; default true
+///     \cgalParamType{`bool`} \cgalParamNEnd
 ///   \cgalParamNBegin{decimation_visitor} progress and cancellation, see `Default_decimation_visitor`
-///     (pass `std::ref(visitor)` to keep its state) \cgalParamNEnd
-///   \cgalParamNBegin{vertex_point_map} the points of `mesh`; default the mesh's internal point map \cgalParamNEnd
+///     (pass `std::ref(visitor)` to keep its state)
+///     \cgalParamType{a model of `DecimationVisitor`} \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map} the points of `mesh`; default the mesh's internal point map
+///     \cgalParamType{a model of `ReadWritePropertyMap` (`ReadablePropertyMap` for a mesh only read) with the vertex descriptors as keys and points with double coordinates as values} \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// Throws, leaving `mesh` unchanged, `Bad_parameter` if a parameter is out of

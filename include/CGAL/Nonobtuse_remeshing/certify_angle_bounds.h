@@ -5,6 +5,7 @@
 #ifndef CGAL_NONOBTUSE_REMESHING_CERTIFY_ANGLE_BOUNDS_H
 #define CGAL_NONOBTUSE_REMESHING_CERTIFY_ANGLE_BOUNDS_H
 
+#include <CGAL/Nonobtuse_remeshing/angle_bounds.h>
 #include <CGAL/Nonobtuse_remeshing/exceptions.h>
 #include <CGAL/Nonobtuse_remeshing/internal/angle_predicates.h>
 #include <CGAL/Nonobtuse_remeshing/parameters.h>
@@ -22,8 +23,6 @@
 
 namespace CGAL {
 namespace Nonobtuse_remeshing {
-
-using internal::Angle_bounds;
 
 /// \ingroup PkgNonobtuseRemeshingRef
 /// Result of `certify_angle_bounds()`.
@@ -62,25 +61,18 @@ struct Angle_certificate
   bool is_certified() const { return offending_faces.empty() && faces > 0; }
 };
 
-namespace internal {
-
-inline int angle_bin(double degrees)
-{
-  if(degrees <= 90.) return (std::max)(0, (std::min)(17, int(degrees / 5.)));
-  return (std::max)(18, (std::min)(35, int(degrees / 5.)));
-}
-
-} // namespace internal
-
 /// \ingroup PkgNonobtuseRemeshingRef
 /// Decides exactly, for every corner of every face of the triangle mesh `mesh`,
 /// whether its angle lies in [`min_angle`, `max_angle`] (degrees, default
 /// [30, 90]), from the stored double coordinates.
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{min_angle} lower bound in degrees (default 30) \cgalParamNEnd
-///   \cgalParamNBegin{max_angle} upper bound in degrees (default 90) \cgalParamNEnd
-///   \cgalParamNBegin{vertex_point_map} CGAL's vertex point map \cgalParamNEnd
+///   \cgalParamNBegin{min_angle} lower bound in degrees (default 30)
+///     \cgalParamType{`double`} \cgalParamNEnd
+///   \cgalParamNBegin{max_angle} upper bound in degrees (default 90)
+///     \cgalParamType{`double`} \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map} CGAL's vertex point map
+///     \cgalParamType{a model of `ReadWritePropertyMap` (`ReadablePropertyMap` for a mesh only read) with the vertex descriptors as keys and points with double coordinates as values} \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// Bounds of 0, 30, 45, 60, 90, 120, 135, 150 and 180 degrees are tested

@@ -11,6 +11,7 @@
 #include <CGAL/Nonobtuse_remeshing/internal/Deform_to_fit.h>
 #include <CGAL/Nonobtuse_remeshing/internal/closest_triangle.h>
 #include <CGAL/Nonobtuse_remeshing/parameters.h>
+#include <CGAL/Nonobtuse_remeshing/visitors.h>
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -22,50 +23,6 @@
 
 namespace CGAL {
 namespace Nonobtuse_remeshing {
-
-namespace internal {
-
-// Reads and checks the fit's named parameters; throws Bad_parameter
-// for one out of range.
-template <typename NamedParameters>
-Deform_to_fit_options deform_to_fit_options(const NamedParameters& np, int& rings)
-{
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  internal::Deform_to_fit_options o;  // its members hold the defaults
-  o.alpha = choose_parameter(get_parameter(np, internal_np::alpha), o.alpha);
-  o.drum_subdivisions = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), o.drum_subdivisions);
-  o.smoothing_steps = choose_parameter(get_parameter(np, internal_np::smoothing_steps), o.smoothing_steps);
-  o.tolerance = choose_parameter(get_parameter(np, internal_np::fit_tolerance), o.tolerance);
-  o.max_moves = choose_parameter(get_parameter(np, internal_np::max_moves), o.max_moves);
-  o.max_seconds = choose_parameter(get_parameter(np, internal_np::max_seconds), o.max_seconds);
-  o.lazy_evaluation = choose_parameter(get_parameter(np, internal_np::lazy_evaluation), o.lazy_evaluation);
-  o.early_smoothing = choose_parameter(get_parameter(np, internal_np::early_smoothing), o.early_smoothing);
-  o.tangential_smoothing = choose_parameter(get_parameter(np, internal_np::tangential_smoothing), o.tangential_smoothing);
-  o.attract_features = choose_parameter(get_parameter(np, internal_np::attract_features), o.attract_features);
-  rings = choose_parameter(get_parameter(np, internal_np::quadric_rings), 0);
-  if(!(o.alpha >= 0. && o.alpha <= 1.)) throw Bad_parameter("alpha must lie in [0, 1]");
-  if(o.drum_subdivisions < 1 || o.drum_subdivisions > 16)
-    throw Bad_parameter("the drum subdivisions k must lie in [1, 16]");
-  if(rings < 0 || rings > 4) throw Bad_parameter("the quadric rings r must lie in [0, 4]");
-  if(o.smoothing_steps < 0 || o.smoothing_steps > 100)
-    throw Bad_parameter("the smoothing steps must lie in [0, 100]");
-  if(!(o.tolerance > 0. && o.tolerance < 1.)) throw Bad_parameter("the fit tolerance must lie in (0, 1)");
-  if(!(o.max_seconds >= 0.)) throw Bad_parameter("the time budget must be at least 0");
-  return o;
-}
-
-} // namespace internal
-
-/// \ingroup PkgNonobtuseRemeshingRef
-/// Default visitor of `deform_to_fit()`: never cancels. A visitor has
-/// `bool keep_going(const Deform_to_fit_statistics&)`, called before every
-/// move; returning false stops the optimization, and the mesh stays
-/// certified.
-struct Default_deform_to_fit_visitor
-{
-  bool keep_going(const Deform_to_fit_statistics&) { return true; }
-};
 
 /// \ingroup PkgNonobtuseRemeshingRef
 /// Deform-to-fit (thesis, chapter 5): moves the vertices of `mesh`, whose
@@ -84,23 +41,36 @@ struct Default_deform_to_fit_visitor
 /// to run the thesis's objective as written.
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{alpha} weight of the distance term D, in [0, 1]; default 0.5 \cgalParamNEnd
-///   \cgalParamNBegin{drum_subdivisions} k, the drum planes per side of F(v), in [1, 16]; default 2 \cgalParamNEnd
+///   \cgalParamNBegin{alpha} weight of the distance term D, in [0, 1]; default 0.5
+///     \cgalParamType{`double`} \cgalParamNEnd
+///   \cgalParamNBegin{drum_subdivisions} k, the drum planes per side of F(v), in [1, 16]; default 2
+///     \cgalParamType{`int`} \cgalParamNEnd
 ///   \cgalParamNBegin{quadric_rings} r, the rings of input triangles around the closest one
-///     whose planes make D, in [0, 4]; default 0 \cgalParamNEnd
-///   \cgalParamNBegin{smoothing_steps} constrained Laplacian smoothing passes, in [0, 100]; default 2 \cgalParamNEnd
+///     whose planes make D, in [0, 4]; default 0
+///     \cgalParamType{`int`} \cgalParamNEnd
+///   \cgalParamNBegin{smoothing_steps} constrained Laplacian smoothing passes, in [0, 100]; default 2
+///     \cgalParamType{`int`} \cgalParamNEnd
 ///   \cgalParamNBegin{fit_tolerance} a move must improve L by (fit_tolerance * input bounding-box
-///     diagonal)^2; the fit stops when no vertex can; default 1e-4 \cgalParamNEnd
-///   \cgalParamNBegin{max_moves} budget in moves; default unlimited \cgalParamNEnd
-///   \cgalParamNBegin{max_seconds} budget in seconds; default unlimited \cgalParamNEnd
-///   \cgalParamNBegin{lazy_evaluation} thesis 5.6; default true \cgalParamNEnd
-///   \cgalParamNBegin{early_smoothing} thesis 5.6; default true \cgalParamNEnd
-///   \cgalParamNBegin{tangential_smoothing} default true \cgalParamNEnd
-///   \cgalParamNBegin{attract_features} default true \cgalParamNEnd
+///     diagonal)^2; the fit stops when no vertex can; default 1e-4
+///     \cgalParamType{`double`} \cgalParamNEnd
+///   \cgalParamNBegin{max_moves} budget in moves; default unlimited
+///     \cgalParamType{`std::size_t`} \cgalParamNEnd
+///   \cgalParamNBegin{max_seconds} budget in seconds; default unlimited
+///     \cgalParamType{`double`} \cgalParamNEnd
+///   \cgalParamNBegin{lazy_evaluation} a moved vertex's neighbours are re-evaluated only when they reach the top of the queue (thesis, 5.6); default true
+///     \cgalParamType{`bool`} \cgalParamNEnd
+///   \cgalParamNBegin{early_smoothing} a smoothing pass starts when the queue first stalls (thesis, 5.6); default true
+///     \cgalParamType{`bool`} \cgalParamNEnd
+///   \cgalParamNBegin{tangential_smoothing} S acts along the input's tangent plane only (beyond the thesis); default true
+///     \cgalParamType{`bool`} \cgalParamNEnd
+///   \cgalParamNBegin{attract_features} the input's vertices and points along its sharp and border edges attract their nearest mesh vertex (beyond the thesis); default true
+///     \cgalParamType{`bool`} \cgalParamNEnd
 ///   \cgalParamNBegin{fit_visitor} progress and cancellation, see `Default_deform_to_fit_visitor`
-///     (pass `std::ref(visitor)` to keep its state) \cgalParamNEnd
+///     (pass `std::ref(visitor)` to keep its state)
+///     \cgalParamType{a model of `DeformToFitVisitor`} \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map} the points of `mesh`, read and written; default the mesh's
-///     internal point map \cgalParamNEnd
+///     internal point map
+///     \cgalParamType{a model of `ReadWritePropertyMap` (`ReadablePropertyMap` for a mesh only read) with the vertex descriptors as keys and points with double coordinates as values} \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// `np_input` may hold the `vertex_point_map` of `input` (read only). The points must have

@@ -13,6 +13,7 @@
 #include <CGAL/Nonobtuse_remeshing/internal/input_triangles.h>
 #include <CGAL/Nonobtuse_remeshing/internal/inside_test.h>
 #include <CGAL/Nonobtuse_remeshing/internal/marching_cubes_table.h>
+#include <CGAL/Nonobtuse_remeshing/internal/mesh_helpers.h>
 #include <CGAL/Nonobtuse_remeshing/internal/mesh_cube_intersection.h>
 #include <CGAL/Nonobtuse_remeshing/internal/patches_and_signs.h>
 #include <CGAL/Nonobtuse_remeshing/internal/stitching.h>
@@ -27,6 +28,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <iomanip>
 #include <numeric>
@@ -81,6 +83,33 @@ struct Marching_cubes_result
 };
 
 /// \ingroup PkgNonobtuseRemeshingRef
+/// The fields of `r` (Table 4.1), as `for_each_field()` of statistics.h;
+/// the face maps are not fields.
+template <typename F>
+void for_each_field(const Marching_cubes_result& r, F&& f)
+{
+  f("resolution", r.resolution);
+  f("cube_size", r.cube_size);
+  f("input_triangles", r.input_triangles);
+  f("degenerate_input_triangles", r.degenerate_input_triangles);
+  f("cubes_intersected", r.cubes_intersected);
+  f("cubes_with_several_patches", r.cubes_with_several_patches);
+  f("patches", r.patches);
+  f("patches_ignored", r.patches_ignored);
+  f("cube_faces_stitched", r.faces_stitched);
+  f("welds_refused", r.welds_refused);
+  f("non_manifold_faces_removed", r.non_manifold_faces_removed);
+  f("islands_removed", r.islands_removed);
+  f("vertices_out", r.vertices_out);
+  f("triangles_out", r.triangles_out);
+  f("borders_out", r.borders_out);
+  f("components_out", r.components_out);
+  f("valence_range", std::array<std::size_t, 2>{r.min_valence, r.max_valence});
+  f("angle_range", std::array<double, 2>{r.min_angle, r.max_angle});
+  f("seconds", r.seconds);
+}
+
+/// \ingroup PkgNonobtuseRemeshingRef
 /// Builds the initial nonobtuse mesh of `input` into `output` (cleared first):
 /// the nonobtuse Marching Cubes of the thesis's chapter 4 on a grid of
 /// `resolution` cubes along the longest side of the input's bounding box.
@@ -90,15 +119,19 @@ struct Marching_cubes_result
 /// component follows the orientation of the input component it comes from).
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{resolution} cubes along the longest side (default 100) \cgalParamNEnd
+///   \cgalParamNBegin{resolution} cubes along the longest side (default 100)
+///     \cgalParamType{`int`} \cgalParamNEnd
 ///   \cgalParamNBegin{sign_source} `Sign_source::patches` (default) or
-///     `Sign_source::inside_test` (closed inputs only) \cgalParamNEnd
+///     `Sign_source::inside_test` (closed inputs only)
+///     \cgalParamType{`Sign_source`} \cgalParamNEnd
 ///   \cgalParamNBegin{memory_budget} bytes the construction, and the stages
 ///     after it, may use, as estimated from the patches of input triangles met
 ///     by the grid (about 2 KiB each, measured peak); a `double`, default
 ///     `default_memory_budget` (4 GiB). Beyond it `Memory_budget_exceeded` is
-///     thrown before the mesh is built. \cgalParamNEnd
-///   \cgalParamNBegin{vertex_point_map} the points of `input`; default its internal point map \cgalParamNEnd
+///     thrown before the mesh is built.
+///     \cgalParamType{`double`} \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map} the points of `input`; default its internal point map
+///     \cgalParamType{a model of `ReadWritePropertyMap` (`ReadablePropertyMap` for a mesh only read) with the vertex descriptors as keys and points with double coordinates as values} \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// `np_out` may hold the `vertex_point_map` of `output`, through which its points are written.
@@ -236,7 +269,7 @@ Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, Triang
   std::vector<std::array<std::size_t, 3> > triangles = soup.triangles;
   if(!PMP::is_polygon_soup_a_polygon_mesh(triangles))
     CGAL_error_msg("nonobtuse_marching_cubes: the stitched soup is not a polygon mesh");
-  clear(output);
+  internal::clear_keeping_maps(output, 0);
   PMP::polygon_soup_to_polygon_mesh(points, triangles, output, CGAL::parameters::default_values(),
                                     CGAL::parameters::vertex_point_map(output_vpm));
 

@@ -14,6 +14,8 @@
 #ifndef CGAL_NONOBTUSE_REMESHING_PARAMETERS_H
 #define CGAL_NONOBTUSE_REMESHING_PARAMETERS_H
 
+#include <CGAL/Nonobtuse_remeshing/internal/named_parameters.h>
+
 #include <CGAL/Named_function_parameters.h>
 
 #include <functional>
@@ -80,27 +82,6 @@ using CGAL::parameters::get_parameter_reference;
 CGAL_NONOBTUSE_TAGS(CGAL_NONOBTUSE_DECLARE_FUNCTION)
 #undef CGAL_NONOBTUSE_DECLARE_FUNCTION
 
-namespace internal {
-
-// Rebuilds the chain `np` on top of `base`: the result holds every parameter of
-// both, those of `np` looked up first.
-template <typename Base, typename T, typename Tag>
-Named_function_parameters<T, Tag, Base>
-append(const Base& base, const Named_function_parameters<T, Tag>& np)
-{
-  return Named_function_parameters<T, Tag, Base>(np.v, base);
-}
-
-template <typename Base, typename T, typename Tag, typename NpBase>
-auto append(const Base& base, const Named_function_parameters<T, Tag, NpBase>& np)
-{
-  const NpBase& rest = np;
-  auto chained = internal::append(base, rest);
-  return Named_function_parameters<T, Tag, decltype(chained)>(np.v, chained);
-}
-
-} // namespace internal
-
 /// Combines named-parameter chains, this package's and CGAL's, into one.
 /// When a tag appears twice, the value from the later argument wins.
 template <typename NP>
@@ -114,15 +95,6 @@ auto combine(const NP1& np1, const NP2& np2, const NPs&... nps)
 
 } // namespace parameters
 
-namespace internal {
-
-// A visitor given by value is copied, one given with std::ref is used in place.
-template <typename Visitor>
-Visitor& visitor_reference(Visitor& v) { return v; }
-template <typename Visitor>
-Visitor& visitor_reference(std::reference_wrapper<Visitor>& v) { return v.get(); }
-
-} // namespace internal
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
 

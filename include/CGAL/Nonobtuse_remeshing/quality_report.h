@@ -8,6 +8,7 @@
 
 #include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
 #include <CGAL/Nonobtuse_remeshing/exceptions.h>
+#include <CGAL/Nonobtuse_remeshing/internal/distance_measures.h>
 #include <CGAL/Nonobtuse_remeshing/internal/angle_predicates.h>
 #include <CGAL/Nonobtuse_remeshing/parameters.h>
 
@@ -34,6 +35,7 @@
 #include <set>
 #include <stdexcept>
 #include <unordered_map>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -91,90 +93,6 @@ struct Quality_report
   boost::optional<Distance_report> distance;
 };
 
-namespace internal {
-
-// Area-weighted mean distance from `mesh` to the triangles in `tree`: each
-// face is integrated with the degree-3 rule that weighs the vertices 1/20,
-// the edge midpoints 2/15 and the centroid 9/20.
-template <typename TriangleMesh, typename Tree>
-double mean_distance(const TriangleMesh& mesh, const Tree& tree)
-{
-  using Point = typename boost::property_traits<
-      typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type;
-  const auto vpm = get(CGAL::vertex_point, mesh);
-  double integral = 0., area = 0.;
-  for(auto f : faces(mesh)) {
-    const auto h = halfedge(f, mesh);
-    const Point& a = get(vpm, source(h, mesh));
-    const Point& b = get(vpm, target(h, mesh));
-    const Point& c = get(vpm, target(next(h, mesh), mesh));
-    const double fa = std::sqrt(to_double(CGAL::squared_area(a, b, c)));
-    auto d = [&](const Point& p) { return std::sqrt(to_double(tree.squared_distance(p))); };
-    const double corners = d(a) + d(b) + d(c);
-    const double midpoints = d(CGAL::midpoint(a, b)) + d(CGAL::midpoint(b, c)) + d(CGAL::midpoint(c, a));
-    const double mean = corners / 20. + midpoints * 2. / 15. + d(CGAL::centroid(a, b, c)) * 9. / 20.;
-    integral += fa * mean;
-    area += fa;
-  }
-  return area > 0. ? integral / area : 0.;
-}
-
-template <typename TriangleMesh>
-double bbox_diagonal(const TriangleMesh& mesh)
-{
-  const Bbox_3 box = Polygon_mesh_processing::bbox(mesh);
-  const double dx = box.xmax() - box.xmin(), dy = box.ymax() - box.ymin(), dz = box.zmax() - box.zmin();
-  return std::sqrt(dx * dx + dy * dy + dz * dz);
-}
-
-template <typename TriangleMesh>
-Distance_report distance_report(const TriangleMesh& mesh, const TriangleMesh& reference,
-                                double relative_error)
-{
-  namespace PMP = Polygon_mesh_processing;
-  using Primitive = AABB_face_graph_triangle_primitive<TriangleMesh>;
-  using Traits = AABB_traits<typename Kernel_traits<typename boost::property_traits<
-      typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type>::Kernel,
-      Primitive>;
-
-  Distance_report r;
-  r.reference_diagonal = bbox_diagonal(reference);
-  if(!(r.reference_diagonal > 0.))
-    throw Bad_input("the reference mesh has a zero-size bounding box");
-  const double scale = r.reference_diagonal > 0. ? 100. / r.reference_diagonal : 0.;
-  const double error = relative_error * r.reference_diagonal;
-  r.hausdorff_to_reference =
-      scale * PMP::bounded_error_Hausdorff_distance<Sequential_tag>(mesh, reference, error);
-  r.hausdorff_from_reference =
-      scale * PMP::bounded_error_Hausdorff_distance<Sequential_tag>(reference, mesh, error);
-  r.hausdorff_symmetric = (std::max)(r.hausdorff_to_reference, r.hausdorff_from_reference);
-  r.hausdorff_error_bound = scale * error;
-
-  AABB_tree<Traits> to_reference(faces(reference).first, faces(reference).second, reference);
-  to_reference.accelerate_distance_queries();
-  r.mean_to_reference = scale * mean_distance(mesh, to_reference);
-  AABB_tree<Traits> to_mesh(faces(mesh).first, faces(mesh).second, mesh);
-  to_mesh.accelerate_distance_queries();
-  r.mean_from_reference = scale * mean_distance(reference, to_mesh);
-  return r;
-}
-
-// Keeps the reference's type out of template deduction, so that a null
-// reference can be passed as `nullptr`.
-template <typename T> struct Same { using type = T; };
-
-// Output iterator that only counts the face pairs it is given.
-struct Counting_iterator
-{
-  std::size_t* count;
-  Counting_iterator& operator*() { return *this; }
-  Counting_iterator& operator++() { return *this; }
-  Counting_iterator operator++(int) { return *this; }
-  template <typename T> Counting_iterator& operator=(const T&) { ++*count; return *this; }
-};
-
-} // namespace internal
-
 /// \ingroup PkgNonobtuseRemeshingRef
 /// Computes the quality report of the triangle mesh `mesh` (a
 /// `CGAL::Surface_mesh` or any model of `FaceListGraph`). If `reference` is
@@ -187,14 +105,16 @@ struct Counting_iterator
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{min_angle, max_angle} the bounds to certify (default 30, 90) \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_self_intersections} cap on the counted self-intersecting
-///     face pairs (default 1000) \cgalParamNEnd
+///     face pairs (default 1000)
+///     \cgalParamType{`std::size_t`} \cgalParamNEnd
 ///   \cgalParamNBegin{hausdorff_relative_error} error bound of the Hausdorff distances,
-///     as a fraction of the reference's bounding-box diagonal (default 1e-4) \cgalParamNEnd
+///     as a fraction of the reference's bounding-box diagonal (default 1e-4)
+///     \cgalParamType{`double`} \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <typename TriangleMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Quality_report quality_report(const TriangleMesh& mesh,
-                              const typename internal::Same<TriangleMesh>::type* reference = nullptr,
+                              const std::common_type_t<TriangleMesh>* reference = nullptr,
                               const NamedParameters& np = CGAL::parameters::default_values())
 {
   namespace PMP = Polygon_mesh_processing;
@@ -259,7 +179,7 @@ Quality_report quality_report(const TriangleMesh& mesh,
 
   r.bbox_diagonal = internal::bbox_diagonal(mesh);
   if(reference != nullptr)
-    r.distance = internal::distance_report(mesh, *reference, hausdorff_error);
+    r.distance = internal::distance_report<Distance_report>(mesh, *reference, hausdorff_error);
   return r;
 }
 

@@ -41,9 +41,12 @@ namespace Nonobtuse_remeshing {
 /// (call `collect_garbage()`).
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_split} split after removal; default true \cgalParamNEnd
-///   \cgalParamNBegin{drum_subdivisions} k of the feasible regions, in [1, 16]; default 2 \cgalParamNEnd
-///   \cgalParamNBegin{vertex_point_map} default: the mesh's \cgalParamNEnd
+///   \cgalParamNBegin{vertex_split} split after removal; default true
+///     \cgalParamType{`bool`} \cgalParamNEnd
+///   \cgalParamNBegin{drum_subdivisions} k of the feasible regions, in [1, 16]; default 2
+///     \cgalParamType{`int`} \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map} default: the mesh's
+///     \cgalParamType{a model of `ReadWritePropertyMap` (`ReadablePropertyMap` for a mesh only read) with the vertex descriptors as keys and points with double coordinates as values} \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// Throws, leaving `mesh` unchanged, `Bad_parameter` if k is out of range and

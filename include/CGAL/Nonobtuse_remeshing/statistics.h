@@ -133,6 +133,121 @@ struct Angle_bounded_decimation_statistics
   double seconds = 0.;
 };
 
+/// \ingroup PkgNonobtuseRemeshingRef
+/// The name of `reason` in reports: "target reached", "maximum error
+/// reached", "no collapse left", "round limit" or "cancelled".
+inline const char* stop_reason_name(Decimation_stop_reason reason)
+{
+  switch(reason) {
+  case Decimation_stop_reason::target_reached: return "target reached";
+  case Decimation_stop_reason::max_error: return "maximum error reached";
+  case Decimation_stop_reason::no_collapse_left: return "no collapse left";
+  case Decimation_stop_reason::round_limit: return "round limit";
+  case Decimation_stop_reason::cancelled: return "cancelled";
+  }
+  return "unknown";
+}
+
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Calls `f(name, value)` for every field of `c`, in a fixed order, with
+/// `name` the field's name in reports (the keys of the tool's JSON report,
+/// whose text is made from the same calls); values are numbers, flags, the counts v2, v3 (border and interior), int-v4, int-v12+ and their total.
+template <typename F>
+void for_each_field(const Valence_counts& c, F&& f)
+{
+  f("v2", c.valence_2);
+  f("v3", c.valence_3());
+  f("v3_border", c.border_valence_3);
+  f("v3_interior", c.interior_valence_3);
+  f("int_v4", c.interior_valence_4);
+  f("int_above_11", c.interior_valence_above_11);
+  f("total", c.total());
+}
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Calls `f(name, value)` for every field of `s`, in a fixed order, with
+/// `name` the field's name in reports (the keys of the tool's JSON report,
+/// whose text is made from the same calls); values are numbers, flags, and the `Valence_counts` before and after.
+template <typename F>
+void for_each_field(const Bad_valence_removal_statistics& s, F&& f)
+{
+  f("before", s.before);
+  f("after", s.after);
+  f("vertices_before", s.vertices_before);
+  f("vertices_after", s.vertices_after);
+  f("border_valence_2_discarded", s.border_valence_2_discarded);
+  f("interior_valence_3_discarded", s.interior_valence_3_discarded);
+  f("interior_valence_4_discarded", s.interior_valence_4_discarded);
+  f("interior_valence_4_collapsed", s.interior_valence_4_collapsed);
+  f("border_valence_3_discarded", s.border_valence_3_discarded);
+  f("border_valence_3_collapsed", s.border_valence_3_collapsed);
+  f("border_teeth_removed", s.border_teeth_removed);
+  f("splits", s.splits);
+  f("refused_by_certification", s.refused);
+  f("rounds", s.rounds);
+  f("seconds", s.seconds);
+}
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Calls `f(name, value)` for every field of `s`, in a fixed order, with
+/// `name` the field's name in reports (the keys of the tool's JSON report,
+/// whose text is made from the same calls); values are numbers, flags, with distances in % of the input's bounding-box diagonal.
+template <typename F>
+void for_each_field(const Deform_to_fit_statistics& s, F&& f)
+{
+  f("vertices", s.vertices);
+  f("feature_samples", s.feature_samples);
+  f("moves", s.moves);
+  f("smoothing_moves", s.smoothing_moves);
+  f("qp_solves", s.qp_solves);
+  f("qp_fallbacks", s.qp_fallbacks);
+  f("infeasible_regions", s.infeasible_regions);
+  f("shortened_moves", s.shortened_moves);
+  f("rejected_moves", s.rejected_moves);
+  f("undone_moves", s.undone_moves);
+  f("full_updates", s.full_updates);
+  f("smoothing_passes", s.smoothing_passes);
+  f("intersecting_pairs_found", s.intersecting_pairs_found);
+  f("untangling_moves", s.untangling_moves);
+  f("intersecting_pairs", s.intersecting_pairs);
+  f("rms_vertex_distance_percent", s.rms_distance);
+  f("budget_exhausted", s.budget_exhausted);
+  f("cancelled", s.cancelled);
+  f("optimization_seconds", s.optimization_seconds);
+  f("smoothing_seconds", s.smoothing_seconds);
+  f("untangling_seconds", s.untangling_seconds);
+  f("seconds", s.seconds);
+}
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Calls `f(name, value)` for every field of `s`, in a fixed order, with
+/// `name` the field's name in reports (the keys of the tool's JSON report,
+/// whose text is made from the same calls); values are numbers, flags, the `Decimation_stop_reason`, and errors in % of the diagonal.
+template <typename F>
+void for_each_field(const Angle_bounded_decimation_statistics& s, F&& f)
+{
+  f("vertices_before", s.vertices_before);
+  f("vertices_after", s.vertices_after);
+  f("target_vertices", s.target_vertices);
+  f("stop_reason", s.stop_reason);
+  f("target_reached", s.stop_reason == Decimation_stop_reason::target_reached);
+  f("collapses", s.collapses);
+  f("qp_solves", s.qp_solves);
+  f("qp_fallbacks", s.qp_fallbacks);
+  f("empty_regions", s.empty_regions);
+  f("valence_refusals", s.valence_refusals);
+  f("certification_refusals", s.certification_refusals);
+  f("topology_refusals", s.topology_refusals);
+  f("rounds", s.rounds);
+  f("relaxations", s.relaxations);
+  f("relaxation_moves", s.relaxation_moves);
+  f("relaxation_seconds", s.relaxation_seconds);
+  f("largest_collapse_error_percent", 100. * s.largest_collapse_error);
+  f("stopping_error_percent", 100. * s.stopping_error);
+  f("seconds", s.seconds);
+}
+
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
 

@@ -21,11 +21,15 @@
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_ANGLE_BOUNDED_DECIMATION_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_ANGLE_BOUNDED_DECIMATION_H
 
+#include <CGAL/Nonobtuse_remeshing/certify_angle_bounds.h>
+#include <CGAL/Nonobtuse_remeshing/exceptions.h>
 #include <CGAL/Nonobtuse_remeshing/internal/Deform_to_fit.h>
 #include <CGAL/Nonobtuse_remeshing/internal/closest_triangle.h>
 #include <CGAL/Nonobtuse_remeshing/internal/decimation_policies.h>
+#include <CGAL/Nonobtuse_remeshing/parameters.h>
 
 #include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -53,6 +57,52 @@ struct Angle_bounded_decimation_options
   double relaxation_tolerance = 1e-3;  // the fit's tolerance
   int max_rounds = 64;
 };
+
+// Reads and checks the parameters shared by both entry points; throws
+// Bad_parameter before anything changes.
+template <typename NamedParameters>
+Angle_bounded_decimation_options decimation_options(const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Angle_bounded_decimation_options o;  // its members hold the defaults
+  o.drum_subdivisions = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), o.drum_subdivisions);
+  o.min_interior_valence = choose_parameter(get_parameter(np, internal_np::min_interior_valence), o.min_interior_valence);
+  o.min_border_valence = choose_parameter(get_parameter(np, internal_np::min_border_valence), o.min_border_valence);
+  o.max_error = choose_parameter(get_parameter(np, internal_np::max_error), o.max_error);
+  o.relaxation = choose_parameter(get_parameter(np, internal_np::relaxation), o.relaxation);
+  if(o.drum_subdivisions < 1 || o.drum_subdivisions > 16)
+    throw Bad_parameter("the drum subdivisions k must lie in [1, 16]");
+  if(o.min_interior_valence < 3 || o.min_interior_valence > 12)
+    throw Bad_parameter("the interior valence floor must lie in [3, 12]");
+  if(o.min_border_valence < 2 || o.min_border_valence > 12)
+    throw Bad_parameter("the border valence floor must lie in [2, 12]");
+  if(!(o.max_error > 0.)) throw Bad_parameter("the maximum error must be positive");
+  return o;
+}
+
+// The ratios of a hierarchy's levels; throws Bad_parameter unless they
+// decrease strictly within (0, 1).
+inline void check_level_ratios(const std::vector<double>& ratios)
+{
+  if(ratios.empty()) throw Bad_parameter("the hierarchy needs at least one ratio");
+  for(std::size_t i = 0; i < ratios.size(); ++i)
+    if(!(ratios[i] > 0. && ratios[i] < 1.) || (i > 0 && !(ratios[i] < ratios[i - 1])))
+      throw Bad_parameter("the ratios of the levels must decrease strictly within (0, 1)");
+}
+
+// The bounding-box diagonal of `mesh`, which must be a triangle mesh
+// certified in [30, 90] degrees; throws Bad_input otherwise.
+template <typename TriangleMesh, typename VertexPointMap>
+double certified_mesh_diagonal(const TriangleMesh& mesh, VertexPointMap vpm)
+{
+  if(!is_triangle_mesh(mesh)) throw Bad_input("angle_bounded_decimation: not a triangle mesh");
+  if(!certify_angle_bounds(mesh, CGAL::parameters::vertex_point_map(vpm)).is_certified())
+    throw Bad_input("angle_bounded_decimation needs a mesh certified in [30, 90] degrees");
+  const Bbox_3 box = Polygon_mesh_processing::bbox(mesh, CGAL::parameters::vertex_point_map(vpm));
+  return std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                   CGAL::square(box.zmax() - box.zmin()));
+}
 
 template <typename TriangleMesh, typename VertexPointMap, typename Visitor>
 class Angle_bounded_decimation
@@ -152,9 +202,10 @@ private:
   {
     Deform_to_fit_options o;
     o.tolerance = options_.relaxation_tolerance;
-    Relaxation_visitor fit_visitor{this};
-    Deform_to_fit<TriangleMesh, VertexPointMap, Input, Relaxation_visitor> fit(mesh_, vpm_, closest,
-                                                                              context_.diagonal, o, fit_visitor);
+    // the decimation's visitor decides
+    auto fit_visitor = keep_going_relay([this](const Deform_to_fit_statistics&) { return visitor_.keep_going(stats_); });
+    Deform_to_fit<TriangleMesh, VertexPointMap, Input, decltype(fit_visitor)> fit(mesh_, vpm_, closest,
+                                                                                 context_.diagonal, o, fit_visitor);
     const Deform_to_fit_statistics f = fit.run();
     ++stats_.relaxations;
     stats_.relaxation_moves += f.moves;
@@ -196,13 +247,6 @@ private:
     while(next_ < targets_.size() && vertices_ <= targets_[next_]) emit_(true);
     return next_ < targets_.size();
   }
-
-  // The fit's visitor: the decimation's visitor decides.
-  struct Relaxation_visitor
-  {
-    Self* self;
-    bool keep_going(const Deform_to_fit_statistics&) { return self->visitor_.keep_going(self->stats_); }
-  };
 
   // The stop predicate, called before each collapse with the cheapest cost.
   struct Stop

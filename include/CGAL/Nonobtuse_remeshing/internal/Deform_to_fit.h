@@ -9,18 +9,20 @@
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_DEFORM_TO_FIT_IMPL_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_DEFORM_TO_FIT_IMPL_H
 
+#include <CGAL/Nonobtuse_remeshing/exceptions.h>
 #include <CGAL/Nonobtuse_remeshing/internal/angle_predicates.h>
 #include <CGAL/Nonobtuse_remeshing/internal/closest_triangle.h>
 #include <CGAL/Nonobtuse_remeshing/internal/epick_points.h>
 #include <CGAL/Nonobtuse_remeshing/internal/feasible_region.h>
+#include <CGAL/Nonobtuse_remeshing/internal/feature_attraction.h>
+#include <CGAL/Nonobtuse_remeshing/internal/fit_objective.h>
 #include <CGAL/Nonobtuse_remeshing/internal/small_qp.h>
+#include <CGAL/Nonobtuse_remeshing/internal/untangling.h>
+#include <CGAL/Nonobtuse_remeshing/parameters.h>
 #include <CGAL/Nonobtuse_remeshing/statistics.h>
 
 #include <CGAL/Dynamic_property_map.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/property_map.h>
@@ -51,6 +53,36 @@ struct Deform_to_fit_options
   bool tangential_smoothing = true;
   bool attract_features = true;
 };
+
+// Reads and checks the fit's named parameters; throws Bad_parameter
+// for one out of range.
+template <typename NamedParameters>
+Deform_to_fit_options deform_to_fit_options(const NamedParameters& np, int& rings)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  internal::Deform_to_fit_options o;  // its members hold the defaults
+  o.alpha = choose_parameter(get_parameter(np, internal_np::alpha), o.alpha);
+  o.drum_subdivisions = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), o.drum_subdivisions);
+  o.smoothing_steps = choose_parameter(get_parameter(np, internal_np::smoothing_steps), o.smoothing_steps);
+  o.tolerance = choose_parameter(get_parameter(np, internal_np::fit_tolerance), o.tolerance);
+  o.max_moves = choose_parameter(get_parameter(np, internal_np::max_moves), o.max_moves);
+  o.max_seconds = choose_parameter(get_parameter(np, internal_np::max_seconds), o.max_seconds);
+  o.lazy_evaluation = choose_parameter(get_parameter(np, internal_np::lazy_evaluation), o.lazy_evaluation);
+  o.early_smoothing = choose_parameter(get_parameter(np, internal_np::early_smoothing), o.early_smoothing);
+  o.tangential_smoothing = choose_parameter(get_parameter(np, internal_np::tangential_smoothing), o.tangential_smoothing);
+  o.attract_features = choose_parameter(get_parameter(np, internal_np::attract_features), o.attract_features);
+  rings = choose_parameter(get_parameter(np, internal_np::quadric_rings), 0);
+  if(!(o.alpha >= 0. && o.alpha <= 1.)) throw Bad_parameter("alpha must lie in [0, 1]");
+  if(o.drum_subdivisions < 1 || o.drum_subdivisions > 16)
+    throw Bad_parameter("the drum subdivisions k must lie in [1, 16]");
+  if(rings < 0 || rings > 4) throw Bad_parameter("the quadric rings r must lie in [0, 4]");
+  if(o.smoothing_steps < 0 || o.smoothing_steps > 100)
+    throw Bad_parameter("the smoothing steps must lie in [0, 100]");
+  if(!(o.tolerance > 0. && o.tolerance < 1.)) throw Bad_parameter("the fit tolerance must lie in (0, 1)");
+  if(!(o.max_seconds >= 0.)) throw Bad_parameter("the time budget must be at least 0");
+  return o;
+}
 
 // `Input` is the Closest_triangle of the input surface; the mesh's points
 // are read and written through `VertexPointMap`.
@@ -139,43 +171,7 @@ private:
     bool operator<(const Entry& other) const { return improvement < other.improvement; }
   };
 
-  // The objective as a sum of terms, in global coordinates:
-  // quadric_weight * Q(x) + sum weight * (x - point)^T metric (x - point).
-  struct Objective
-  {
-    struct Attractor
-    {
-      Eigen::Vector3d point;
-      double weight;
-      Eigen::Matrix3d metric;  // the identity, or the projection on a tangent plane
-    };
-    Quadric quadric;
-    double quadric_weight = 0.;
-    std::vector<Attractor> points;
-
-    double value(const Eigen::Vector3d& x) const
-    {
-      double v = quadric.planes > 0 ? quadric_weight * quadric(x) : 0.;
-      for(const Attractor& t : points) v += t.weight * (x - t.point).dot(t.metric * (x - t.point));
-      return v;
-    }
-
-    // 1/2 x^T G x + a^T x in `frame` coordinates, x_global = origin + s x,
-    // divided by s^2 so that the QP is well conditioned.
-    void local_form(const Local_frame& frame, Eigen::Matrix3d& G, Eigen::Vector3d& a) const
-    {
-      G.setZero();
-      a.setZero();
-      if(quadric.planes > 0) {
-        G += 2. * quadric_weight * quadric.A;
-        a += 2. * quadric_weight * (quadric.A * frame.origin + quadric.b) / frame.scale;
-      }
-      for(const Attractor& t : points) {
-        G += 2. * t.weight * t.metric;
-        a += 2. * t.weight * t.metric * (frame.origin - t.point) / frame.scale;
-      }
-    }
-  };
+  using Objective = Fit_objective;
 
   static double seconds_since(Clock::time_point t)
   {
@@ -242,32 +238,11 @@ private:
   void attract_features()
   {
     if(samples_.empty()) return;
-    using Traits = Search_traits_3<Epick>;
-    using Point_map = typename Pointer_property_map<Point>::type;
-    using Adapter = Search_traits_adapter<std::size_t, Point_map, Traits>;
-    using Distance = Distance_adapter<std::size_t, Point_map, Euclidean_distance<Traits> >;
-    using Search = Orthogonal_k_neighbor_search<Adapter, Distance>;
-    using Tree = typename Search::Tree;
     std::vector<Point> points;
-    std::vector<std::size_t> everywhere, on_border;
     points.reserve(vertices_.size());
-    for(std::size_t i = 0; i < vertices_.size(); ++i) {
-      points.push_back(point(vertices_[i]));
-      everywhere.push_back(i);
-      if(on_input_border_[i]) on_border.push_back(i);
-    }
-    const Point_map map = make_property_map(points);
-    const Tree all(everywhere.begin(), everywhere.end(), typename Tree::Splitter(), Adapter(map));
-    const Tree border(on_border.begin(), on_border.end(), typename Tree::Splitter(), Adapter(map));
-    std::vector<std::pair<std::size_t, std::size_t> > owner;  // (vertex, sample)
-    owner.reserve(samples_.size());
-    for(std::size_t s = 0; s < samples_.size(); ++s) {
-      const bool at_border = samples_[s].second;
-      if(at_border && on_border.empty()) continue;
-      const Search search(at_border ? border : all, samples_[s].first, 1, 0., true, Distance(map));
-      owner.emplace_back(search.begin()->first, s);
-    }
-    std::sort(owner.begin(), owner.end());
+    for(std::size_t i = 0; i < vertices_.size(); ++i) points.push_back(point(vertices_[i]));
+    const std::vector<std::pair<std::size_t, std::size_t> > owner =
+        feature_sample_owners(points, on_input_border_, samples_);
     std::vector<std::size_t> attracted, begin(vertices_.size() + 1, 0);
     attracted.reserve(owner.size());
     for(std::size_t i = 0, j = 0; i < vertices_.size(); ++i) {
@@ -522,91 +497,14 @@ private:
     stats_.stage = Deform_to_fit_stage::optimization;
   }
 
-  // Beyond the thesis: where the input is thinner than a cube, the fit can
-  // fold the mesh through itself. The vertices of each self-intersecting
-  // pair and the rings around them, wider each round, take constrained
-  // smoothing moves, or else move back towards their positions in the
-  // initial mesh (constrained and certified like any other move), keeping
-  // only what lowers the number of pairs, for at most five rounds; what
-  // remains is counted.
-  void untangle()
-  {
-    const Clock::time_point start = Clock::now();
-    std::vector<std::pair<face_descriptor, face_descriptor> > pairs;
-    Polygon_mesh_processing::self_intersections(faces(mesh_), mesh_, std::back_inserter(pairs),
-                                                CGAL::parameters::vertex_point_map(points_).geom_traits(Epick()));
-    stats_.intersecting_pairs_found = pairs.size();
-    for(int round = 1; round <= 5 && !pairs.empty() && !stats_.budget_exhausted && !stats_.cancelled; ++round) {
-      std::vector<bool> chosen(vertices_.size(), false);
-      std::vector<std::size_t> front;
-      for(const auto& p : pairs)
-        for(face_descriptor f : {p.first, p.second})
-          for(vertex_descriptor w : vertices_around_face(halfedge(f, mesh_), mesh_))
-            if(!chosen[get(index_, w)]) {
-              chosen[get(index_, w)] = true;
-              front.push_back(get(index_, w));
-            }
-      const std::vector<std::size_t> own = front;
-      std::vector<std::size_t> region = front;
-      for(int ring = 0; ring < round; ++ring) {
-        std::vector<std::size_t> next;
-        for(std::size_t i : front)
-          for(vertex_descriptor w : vertices_around_target(halfedge(vertices_[i], mesh_), mesh_))
-            if(!chosen[get(index_, w)]) {
-              chosen[get(index_, w)] = true;
-              next.push_back(get(index_, w));
-            }
-        region.insert(region.end(), next.begin(), next.end());
-        front.swap(next);
-      }
-      // Constrained smoothing of the region, kept unless it adds pairs; if
-      // pairs are left, moves of the pairs' own vertices back towards the
-      // initial mesh, kept only if they remove pairs. What is not kept is
-      // rolled back to the certified state before it.
-      if(untangle_attempt(region, Goal::smooth, pairs, false)) continue;
-      untangle_attempt(own, Goal::restore, pairs, true);
-    }
-    stats_.intersecting_pairs = pairs.size();
-    stats_.untangling_seconds = seconds_since(start);
-  }
-
-  // Moves the vertices of `region` towards `goal` (three passes); keeps the
-  // moves if they leave fewer pairs (or, unless `strictly`, as many) and
-  // updates `pairs`, else rolls them back. Returns whether pairs were removed.
-  bool untangle_attempt(const std::vector<std::size_t>& region, Goal goal,
-                        std::vector<std::pair<face_descriptor, face_descriptor> >& pairs, bool strictly)
-  {
-    std::vector<Point> saved;
-    std::vector<face_descriptor> saved_hints;
-    for(std::size_t i : region) {
-      saved.push_back(point(vertices_[i]));
-      saved_hints.push_back(hint_[i]);
-    }
-    std::size_t moves = 0;
-    for(int pass = 0; pass < 3; ++pass)
-      for(std::size_t i : region) {
-        Eigen::Vector3d best;
-        double improvement;
-        if(stopped()) break;
-        if(solve(i, goal, best, improvement) && improvement > threshold_ && apply(i, best, false)) ++moves;
-      }
-    std::vector<std::pair<face_descriptor, face_descriptor> > left;
-    Polygon_mesh_processing::self_intersections(
-        faces(mesh_), mesh_, std::back_inserter(left),
-        CGAL::parameters::vertex_point_map(points_).geom_traits(Epick()));
-    if(left.size() < pairs.size() || (!strictly && left.size() == pairs.size())) {
-      const bool removed = left.size() < pairs.size();
-      stats_.untangling_moves += moves;
-      pairs.swap(left);
-      return removed;
-    }
-    stats_.moves -= moves;
-    for(std::size_t j = 0; j < region.size(); ++j) {
-      put_point(vpm_, vertices_[region[j]], saved[j]);
-      hint_[region[j]] = saved_hints[j];
-    }
-    return false;
-  }
+  // Beyond the thesis: untangling.h.
+  void untangle() { internal::untangle(*this); }
+  template <typename Fit>
+  friend void untangle(Fit& fit);
+  template <typename Fit>
+  friend bool untangle_attempt(Fit& fit, const std::vector<std::size_t>& region, typename Fit::Goal goal,
+                               std::vector<std::pair<typename Fit::face_descriptor, typename Fit::face_descriptor> >& pairs,
+                               bool strictly);
 
   void update_rms_distance()
   {

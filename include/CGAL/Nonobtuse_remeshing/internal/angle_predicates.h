@@ -18,6 +18,7 @@
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_ANGLE_PREDICATES_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_ANGLE_PREDICATES_H
 
+#include <CGAL/Nonobtuse_remeshing/angle_bounds.h>
 #include <CGAL/Nonobtuse_remeshing/exceptions.h>
 
 #include <CGAL/Interval_nt.h>
@@ -36,86 +37,6 @@
 namespace CGAL {
 namespace Nonobtuse_remeshing {
 namespace internal {
-
-// A cosine value c = sign * sqrt(factor_a * factor_b), held exactly: the two
-// factors are doubles whose product is taken in exact arithmetic.
-struct Cosine_bound
-{
-  int sign = 0;
-  double factor_a = 0.;
-  double factor_b = 0.;
-  bool exact = true;  // true when the bound is the requested angle itself
-};
-
-// Angles whose cosine has a rational square: their bound is tested exactly.
-inline bool exact_cosine_bound(double degrees, Cosine_bound& bound)
-{
-  struct Entry { double degrees; int sign; double square; };
-  static const Entry table[] = {
-    {0., 1, 1.},     {30., 1, 0.75},  {45., 1, 0.5},   {60., 1, 0.25},
-    {90., 0, 0.},    {120., -1, 0.25}, {135., -1, 0.5}, {150., -1, 0.75},
-    {180., -1, 1.}};
-  for(const Entry& e : table)
-    if(e.degrees == degrees) {
-      bound.sign = e.sign;
-      bound.factor_a = e.square;
-      bound.factor_b = 1.;
-      bound.exact = true;
-      return true;
-    }
-  return false;
-}
-
-// Conservative rounding for other bounds: the double cosine of the bound is
-// within 2e-15 of the true value, so moving it by 1e-12 in the safe direction
-// proves a bound never looser than the one requested (tighter by about
-// 1e-12 / sin(bound) radians; more, up to 1.5e-6 radians, within a few
-// micro-degrees of 0 and 180, where the cosine is flat).
-constexpr double cosine_safety_margin = 1e-12;
-
-inline Cosine_bound cosine_bound(double degrees, bool is_lower_bound)
-{
-  Cosine_bound bound;
-  if(exact_cosine_bound(degrees, bound))
-    return bound;
-  const double pi = 3.141592653589793238462643383279502884;
-  double c = std::cos(degrees / 180. * pi);
-  // A lower angle bound needs cos(angle) <= c: shrink c. An upper one, grow it.
-  c += is_lower_bound ? -cosine_safety_margin : cosine_safety_margin;
-  c = (std::min)(1., (std::max)(-1., c));
-  bound.sign = (c > 0) ? 1 : ((c < 0) ? -1 : 0);
-  bound.factor_a = std::abs(c);
-  bound.factor_b = std::abs(c);
-  bound.exact = false;
-  return bound;
-}
-
-/// The requested angle interval, in degrees, and the exact cosine bounds that
-/// certify it.
-class Angle_bounds
-{
-public:
-  Angle_bounds(double min_degrees = 30., double max_degrees = 90.)
-    : min_degrees_(min_degrees), max_degrees_(max_degrees)
-  {
-    if(!(min_degrees >= 0. && max_degrees <= 180. && min_degrees <= max_degrees))
-      throw Bad_parameter("angle bounds must satisfy 0 <= min <= max <= 180, got [" +
-                                  std::to_string(min_degrees) + ", " +
-                                  std::to_string(max_degrees) + "]");
-    lower_ = cosine_bound(min_degrees, true);
-    upper_ = cosine_bound(max_degrees, false);
-  }
-
-  double min_degrees() const { return min_degrees_; }
-  double max_degrees() const { return max_degrees_; }
-  const Cosine_bound& lower() const { return lower_; }
-  const Cosine_bound& upper() const { return upper_; }
-  bool is_exact() const { return lower_.exact && upper_.exact; }
-
-private:
-  double min_degrees_, max_degrees_;
-  Cosine_bound lower_, upper_;
-};
 
 /// Verdict on one corner.
 struct Corner_verdict
@@ -243,6 +164,14 @@ double corner_angle_degrees(const Point& apex, const Point& p, const Point& q)
   const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
   const double pi = 3.141592653589793238462643383279502884;
   return std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), ux * vx + uy * vy + uz * vz) / pi * 180.;
+}
+
+// The 5-degree bin of `Angle_certificate::angle_histogram` of an angle shown
+// within the bounds (bin 17 is [85, 90], bin 18 is (90, 95)).
+inline int angle_bin(double degrees)
+{
+  if(degrees <= 90.) return (std::max)(0, (std::min)(17, int(degrees / 5.)));
+  return (std::max)(18, (std::min)(35, int(degrees / 5.)));
 }
 
 } // namespace internal

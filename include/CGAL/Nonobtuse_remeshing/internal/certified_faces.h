@@ -2,8 +2,8 @@
 //
 // The check every local operation passes before it is applied: each face it
 // creates certifies exactly in the angle bounds, on the doubles that will be
-// stored, and faces the side of the face it replaces (a test in double, a
-// guard against folds; the bound is what is exact).
+// stored, and faces the side of the face it replaces (beyond the thesis: a
+// test in double, a guard against folds; the bound is what is exact).
 
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_CERTIFIED_FACES_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_CERTIFIED_FACES_H

@@ -8,6 +8,7 @@
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_INPUT_TRIANGLES_H
 
 #include <CGAL/Nonobtuse_remeshing/internal/epick_points.h>
+#include <CGAL/Nonobtuse_remeshing/internal/index_tools.h>
 #include <CGAL/Nonobtuse_remeshing/internal/patches_and_signs.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -49,17 +50,11 @@ Input_triangles input_triangles(const TriangleMesh& mesh, VertexPointMap points)
 // Edge-connected component of each input triangle.
 inline std::vector<std::size_t> input_components(const Input_triangles& input)
 {
-  std::vector<std::size_t> root(input.triangles.size());
-  std::iota(root.begin(), root.end(), 0);
-  auto find = [&](std::size_t x) {
-    while(root[x] != x) x = root[x] = root[root[x]];
-    return x;
-  };
-  for(std::size_t t = 0; t < root.size(); ++t)
+  Index_sets sets(input.triangles.size());
+  for(std::size_t t = 0; t < input.triangles.size(); ++t)
     for(std::size_t n : input.neighbours[t])
-      if(n != Input_triangles::none) root[find(t)] = find(n);
-  for(std::size_t t = 0; t < root.size(); ++t) root[t] = find(t);
-  return root;
+      if(n != Input_triangles::none) sets.join(t, n);
+  return sets.representatives();
 }
 
 } // namespace internal

@@ -17,6 +17,7 @@
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_PATCHES_AND_SIGNS_H
 
 #include <CGAL/Nonobtuse_remeshing/internal/grid.h>
+#include <CGAL/Nonobtuse_remeshing/internal/index_tools.h>
 #include <CGAL/Nonobtuse_remeshing/internal/marching_cubes_table.h>
 #include <CGAL/Nonobtuse_remeshing/internal/mesh_cube_intersection.h>
 
@@ -147,27 +148,22 @@ inline std::vector<Patch> patches_and_signs(const Grid& grid, const Cube_triangl
                                             const Input_triangles& input)
 {
   std::vector<Patch> patches;
-  std::vector<std::size_t> parent;
+  Index_sets sets;
   for(std::size_t c = 0; c < cubes.size(); ++c) {
     const std::size_t* begin = cubes.triangles.data() + cubes.first[c];
     const std::size_t* end = cubes.triangles.data() + cubes.first[c + 1];
     const std::size_t n = std::size_t(end - begin);
-    parent.resize(n);
-    std::iota(parent.begin(), parent.end(), 0);
-    auto find = [&](std::size_t x) {
-      while(parent[x] != x) x = parent[x] = parent[parent[x]];
-      return x;
-    };
+    sets.reset(n);
     for(std::size_t i = 0; i < n; ++i)
       for(std::size_t neighbour : input.neighbours[begin[i]]) {
         if(neighbour == Input_triangles::none) continue;
         const std::size_t* at = std::lower_bound(begin, end, neighbour);
-        if(at != end && *at == neighbour) parent[find(i)] = find(std::size_t(at - begin));
+        if(at != end && *at == neighbour) sets.join(i, std::size_t(at - begin));
       }
     const std::size_t first_patch = patches.size();
     std::vector<std::size_t> patch_of_root(n, std::size_t(-1));
     for(std::size_t i = 0; i < n; ++i) {
-      const std::size_t root = find(i);
+      const std::size_t root = sets.find(i);
       if(patch_of_root[root] == std::size_t(-1)) {
         patch_of_root[root] = patches.size();
         patches.emplace_back();

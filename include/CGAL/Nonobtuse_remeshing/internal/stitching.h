@@ -14,11 +14,13 @@
 //    not match are closed: opposite open edges are zipped, and open cycles of
 //    three or four face midpoints are filled with flat triangles in the face
 //    (right isosceles, angles 45, 45, 90).
-// 3. Clean-up: whatever is still not manifold (an edge with more than two
+// 3. Clean-up (beyond the thesis, which assumes stitching leaves a
+//    manifold): whatever is still not manifold (an edge with more than two
 //    triangles or two of the same direction, a vertex with several fans, a
-//    face twice) is removed and counted, never left in the output.
-// 4. Islands: near open borders and self-intersections, ignored patches can
-//    cut small open fragments off the surface. A piece is removed (and
+//    face twice) is removed and counted, never left in the output
+//    (soup_cleanup.h, as 4).
+// 4. Islands (beyond the thesis): near open borders and self-intersections,
+//    ignored patches can cut small open fragments off the surface. A piece is removed (and
 //    counted) only when it is open, is not the largest piece made from its
 //    input component, and has at most max(8, 1%) of that largest piece's
 //    triangles; closed pieces and large pieces are real geometry and stay.
@@ -27,8 +29,10 @@
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_STITCHING_H
 
 #include <CGAL/Nonobtuse_remeshing/internal/grid.h>
+#include <CGAL/Nonobtuse_remeshing/internal/index_tools.h>
 #include <CGAL/Nonobtuse_remeshing/internal/marching_cubes_table.h>
 #include <CGAL/Nonobtuse_remeshing/internal/patches_and_signs.h>
+#include <CGAL/Nonobtuse_remeshing/internal/soup_cleanup.h>
 
 #include <algorithm>
 #include <array>
@@ -56,26 +60,6 @@ struct Marching_cubes_soup
   std::size_t islands_removed = 0;          // small pieces cut off the surface
 };
 
-/// Component of each triangle of a soup, triangles being joined through
-/// shared edges (either orientation): a representative triangle index each.
-inline std::vector<std::size_t> edge_connected_components(const std::vector<std::array<std::size_t, 3> >& triangles)
-{
-  std::vector<std::size_t> root(triangles.size());
-  std::iota(root.begin(), root.end(), 0);
-  auto find = [&](std::size_t x) {
-    while(root[x] != x) x = root[x] = root[root[x]];
-    return x;
-  };
-  std::unordered_map<std::uint64_t, std::size_t> owner;
-  for(std::size_t f = 0; f < triangles.size(); ++f)
-    for(int i = 0; i < 3; ++i) {
-      const std::size_t u = triangles[f][i], v = triangles[f][(i + 1) % 3];
-      const auto inserted = owner.emplace((std::uint64_t((std::min)(u, v)) << 32) | std::uint64_t((std::max)(u, v)), f);
-      if(!inserted.second) root[find(f)] = find(inserted.first->second);
-    }
-  for(std::size_t f = 0; f < root.size(); ++f) root[f] = find(f);
-  return root;
-}
 
 class Stitcher
 {
@@ -135,15 +119,10 @@ private:
         triangle_patch_.push_back(p);
       }
     }
-    parent_.resize(positions_.size());
-    std::iota(parent_.begin(), parent_.end(), 0);
+    welded_.reset(positions_.size());
   }
 
-  std::size_t find(std::size_t v)
-  {
-    while(parent_[v] != v) v = parent_[v] = parent_[parent_[v]];
-    return v;
-  }
+  std::size_t find(std::size_t v) { return welded_.find(v); }
 
   // ---- links between patches -------------------------------------------------
 
@@ -157,7 +136,7 @@ private:
   const std::vector<std::pair<std::size_t, std::size_t> >& links(std::size_t a, std::size_t b)
   {
     if(a > b) std::swap(a, b);
-    const std::uint64_t key = (std::uint64_t(a) << 32) | std::uint64_t(b);
+    const std::uint64_t key = pair_key(a, b);
     auto found = links_.find(key);
     if(found != links_.end()) return found->second;
     std::vector<std::pair<std::size_t, std::size_t> >& result = links_[key];
@@ -243,7 +222,7 @@ private:
             ++welds_refused_;
             continue;
           }
-          for(std::size_t v : copies) parent_[find(v)] = find(copies[0]);
+          for(std::size_t v : copies) welded_.join(v, copies[0]);
         }
       }
       first = last;
@@ -287,14 +266,13 @@ private:
   {
     // directed edges of the current soup, with canonical vertex ids
     std::unordered_map<std::uint64_t, std::size_t> count;
-    auto key = [](std::size_t u, std::size_t v) { return (std::uint64_t(u) << 32) | std::uint64_t(v); };
     for(auto& t : triangles_)
-      for(int i = 0; i < 3; ++i) ++count[key(find(t[i]), find(t[(i + 1) % 3]))];
+      for(int i = 0; i < 3; ++i) ++count[pair_key(find(t[i]), find(t[(i + 1) % 3]))];
     std::map<std::pair<int, Position>, std::vector<Open_edge> > open;
     for(std::size_t f = 0; f < triangles_.size(); ++f)
       for(int i = 0; i < 3; ++i) {
         const std::size_t u = find(triangles_[f][i]), v = find(triangles_[f][(i + 1) % 3]);
-        if(count[key(u, v)] != 1 || count.count(key(v, u))) continue;
+        if(count[pair_key(u, v)] != 1 || count.count(pair_key(v, u))) continue;
         const Position &a = positions_[u], &b = positions_[v];
         if(((a[0] & 1) + (a[1] & 1) + (a[2] & 1)) != 1 || ((b[0] & 1) + (b[1] & 1) + (b[2] & 1)) != 1)
           continue;  // a centre is not on a face
@@ -336,8 +314,8 @@ private:
     for(std::size_t i = 0; i < edges.size(); ++i)
       for(std::size_t j = i + 1; j < edges.size() && !used[i]; ++j)
         if(!used[j] && at(edges[i].from) == at(edges[j].to) && at(edges[i].to) == at(edges[j].from)) {
-          parent_[find(edges[j].to)] = find(edges[i].from);
-          parent_[find(edges[j].from)] = find(edges[i].to);
+          welded_.join(edges[j].to, edges[i].from);
+          welded_.join(edges[j].from, edges[i].to);
           used[i] = used[j] = true;
           acted = true;
         }
@@ -361,7 +339,7 @@ private:
       for(std::size_t k = 0; k < cycle.size(); ++k) {
         const Open_edge& e = edges[cycle[k]];
         const Open_edge& f = edges[cycle[(k + 1) % cycle.size()]];
-        parent_[find(f.from)] = find(e.to);
+        welded_.join(f.from, e.to);
         used[cycle[k]] = true;
       }
       // reversed cycle x1 <- x2 <- ... : triangles (x1, xn, x(n-1)), ..., (x1, x3, x2)
@@ -381,136 +359,17 @@ private:
   {
     for(auto& t : triangles_)
       for(auto& v : t) v = find(v);
-    std::vector<bool> removed(triangles_.size(), false);
-    for(bool changed = true; changed;) {
-      changed = false;
-      auto remove = [&](std::size_t f) {
-        if(!removed[f]) { removed[f] = true; ++removed_non_manifold_; changed = true; }
-      };
-      // the same face twice (either orientation)
-      std::map<std::array<std::size_t, 3>, std::vector<std::size_t> > by_vertices;
-      for(std::size_t f = 0; f < triangles_.size(); ++f) {
-        if(removed[f]) continue;
-        std::array<std::size_t, 3> s = triangles_[f];
-        std::sort(s.begin(), s.end());
-        by_vertices[s].push_back(f);
-      }
-      for(const auto& entry : by_vertices)
-        if(entry.second.size() > 1)
-          for(std::size_t f : entry.second) remove(f);
-      // edges: at most one triangle per direction, at most two in all
-      std::map<std::pair<std::size_t, std::size_t>, std::vector<std::pair<std::size_t, bool> > > edge_faces;
-      for(std::size_t f = 0; f < triangles_.size(); ++f) {
-        if(removed[f]) continue;
-        for(int i = 0; i < 3; ++i) {
-          const std::size_t u = triangles_[f][i], v = triangles_[f][(i + 1) % 3];
-          edge_faces[{(std::min)(u, v), (std::max)(u, v)}].emplace_back(f, u < v);
-        }
-      }
-      for(const auto& entry : edge_faces) {
-        const auto& fs = entry.second;
-        if(fs.size() > 2 || (fs.size() == 2 && fs[0].second == fs[1].second))
-          for(const auto& f : fs) remove(f.first);
-      }
-      if(changed) continue;
-      // vertices: the faces around each vertex form one fan
-      std::vector<std::vector<std::size_t> > around(positions_.size());
-      for(std::size_t f = 0; f < triangles_.size(); ++f)
-        if(!removed[f])
-          for(std::size_t v : triangles_[f]) around[v].push_back(f);
-      for(std::size_t v = 0; v < around.size(); ++v) {
-        const std::vector<std::size_t>& fs = around[v];
-        if(fs.size() < 2) continue;
-        std::vector<std::size_t> fan(fs.size());
-        std::iota(fan.begin(), fan.end(), 0);
-        auto root = [&](std::size_t x) {
-          while(fan[x] != x) x = fan[x] = fan[fan[x]];
-          return x;
-        };
-        for(std::size_t i = 0; i < fs.size(); ++i)
-          for(std::size_t j = i + 1; j < fs.size(); ++j) {
-            int shared = 0;
-            for(std::size_t a : triangles_[fs[i]])
-              for(std::size_t b : triangles_[fs[j]]) shared += (a == b);
-            if(shared >= 2) fan[root(i)] = root(j);
-          }
-        std::map<std::size_t, std::size_t> size;
-        for(std::size_t i = 0; i < fs.size(); ++i) ++size[root(i)];
-        if(size.size() < 2) continue;
-        std::size_t keep = size.begin()->first;
-        for(const auto& s : size)
-          if(s.second > size[keep]) keep = s.first;
-        for(std::size_t i = 0; i < fs.size(); ++i)
-          if(root(i) != keep) remove(fs[i]);
-      }
-    }
-    std::vector<bool> keep(removed.size());
-    for(std::size_t f = 0; f < removed.size(); ++f) keep[f] = !removed[f];
-    keep_triangles(keep);
-  }
-
-  void keep_triangles(const std::vector<bool>& keep)
-  {
-    std::size_t kept = 0;
-    for(std::size_t f = 0; f < triangles_.size(); ++f)
-      if(keep[f]) {
-        triangles_[kept] = triangles_[f];
-        triangle_patch_[kept] = triangle_patch_[f];
-        ++kept;
-      }
-    triangles_.resize(kept);
-    triangle_patch_.resize(kept);
+    removed_non_manifold_ = remove_non_manifold_triangles(triangles_, triangle_patch_, positions_.size());
   }
 
   // ---- 4. islands ----------------------------------------------------------
 
   void remove_islands()
   {
-    const std::size_t n = triangles_.size();
-    const std::vector<std::size_t> root = edge_connected_components(triangles_);
-    // size of each output component, and the input component it mostly comes from
-    std::unordered_map<std::size_t, std::size_t> size;
-    std::unordered_map<std::size_t, std::unordered_map<std::size_t, std::size_t> > votes;
-    for(std::size_t f = 0; f < n; ++f) {
-      ++size[root[f]];
-      ++votes[root[f]][input_component_[patches_[triangle_patch_[f]].triangles.front()]];
-    }
-    std::unordered_map<std::size_t, std::size_t> largest;  // input component -> its largest piece
-    std::unordered_map<std::size_t, std::size_t> source;
-    for(const auto& entry : votes) {
-      std::size_t top = 0, count = 0;
-      for(const auto& v : entry.second)
-        if(v.second > count || (v.second == count && v.first < top)) { top = v.first; count = v.second; }
-      source[entry.first] = top;
-      auto kept = largest.find(top);
-      if(kept == largest.end() || size[entry.first] > size[kept->second] ||
-         (size[entry.first] == size[kept->second] && entry.first < kept->second))
-        largest[top] = entry.first;
-    }
-    // pieces with a border edge (an edge used once)
-    std::unordered_map<std::uint64_t, int> uses;
-    for(const auto& t : triangles_)
-      for(int i = 0; i < 3; ++i) {
-        const std::size_t u = t[i], v = t[(i + 1) % 3];
-        ++uses[(std::uint64_t((std::min)(u, v)) << 32) | std::uint64_t((std::max)(u, v))];
-      }
-    std::unordered_set<std::size_t> open;
-    for(std::size_t f = 0; f < n; ++f)
-      for(int i = 0; i < 3; ++i) {
-        const std::size_t u = triangles_[f][i], v = triangles_[f][(i + 1) % 3];
-        if(uses[(std::uint64_t((std::min)(u, v)) << 32) | std::uint64_t((std::max)(u, v))] == 1) open.insert(root[f]);
-      }
-    std::unordered_set<std::size_t> removed;
-    for(const auto& entry : size) {
-      const std::size_t main_piece = largest[source[entry.first]];
-      if(entry.first != main_piece && open.count(entry.first) &&
-         entry.second <= (std::max)(std::size_t(8), size[main_piece] / 100))
-        removed.insert(entry.first);
-    }
-    islands_removed_ = removed.size();
-    std::vector<bool> keep(n);
-    for(std::size_t f = 0; f < n; ++f) keep[f] = removed.count(root[f]) == 0;
-    keep_triangles(keep);
+    std::vector<std::size_t> component(triangles_.size());
+    for(std::size_t f = 0; f < triangles_.size(); ++f)
+      component[f] = input_component_[patches_[triangle_patch_[f]].triangles.front()];
+    islands_removed_ = internal::remove_islands(triangles_, triangle_patch_, component);
   }
 
   Marching_cubes_soup compact()
@@ -545,7 +404,7 @@ private:
 
   std::vector<Position> positions_;
   std::vector<std::size_t> vertex_patch_;
-  std::vector<std::size_t> parent_;
+  Index_sets welded_;  // copies of a vertex welded into one
   std::vector<std::array<std::size_t, 3> > triangles_;
   std::vector<std::size_t> triangle_patch_;
   std::size_t faces_stitched_ = 0, welds_refused_ = 0, removed_non_manifold_ = 0, islands_removed_ = 0;

@@ -1,0 +1,198 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The pipeline behind nonobtuse_remesh(): the initial mesh (thesis, chapter
+// 4), the removal of bad-valence vertices (5.7) and deform-to-fit (chapter
+// 5) on meshes whose points are in their internal point maps, with one
+// visitor for progress and cancellation across the stages.
+
+#ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_REMESHING_PIPELINE_H
+#define CGAL_NONOBTUSE_REMESHING_INTERNAL_REMESHING_PIPELINE_H
+
+#include <CGAL/Nonobtuse_remeshing/deform_to_fit.h>
+#include <CGAL/Nonobtuse_remeshing/exceptions.h>
+#include <CGAL/Nonobtuse_remeshing/internal/mesh_helpers.h>
+#include <CGAL/Nonobtuse_remeshing/internal/missing_components.h>
+#include <CGAL/Nonobtuse_remeshing/nonobtuse_marching_cubes.h>
+#include <CGAL/Nonobtuse_remeshing/parameters.h>
+#include <CGAL/Nonobtuse_remeshing/remeshing_stages.h>
+#include <CGAL/Nonobtuse_remeshing/remove_bad_valence_vertices.h>
+#include <CGAL/Nonobtuse_remeshing/resolution_for_target_vertices.h>
+
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/Polygon_mesh_processing/shape_predicates.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <type_traits>
+
+namespace CGAL {
+namespace Nonobtuse_remeshing {
+namespace internal {
+
+// The pipeline of nonobtuse_remesh() on meshes whose points are in their
+// internal point maps (any vertex_point_map in `np` is not used).
+template <typename TriangleMesh, typename NamedParameters>
+Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& input, TriangleMesh& output,
+                                                         const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  const auto seconds_since = [](Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+  };
+  clear(output);
+  if(num_faces(input) == 0 || !is_triangle_mesh(input))
+    throw Bad_input("nonobtuse_remesh: the input must be a non-empty triangle mesh");
+
+  Nonobtuse_remeshing_statistics stats;
+  const Remeshing_stage last = choose_parameter(get_parameter(np, internal_np::stop_after), Remeshing_stage::fit);
+  const bool valence_cleanup = choose_parameter(get_parameter(np, internal_np::valence_cleanup), true);
+  const int k = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), 2);
+  if(last == Remeshing_stage::valence && !valence_cleanup)
+    throw Bad_parameter("stopping after the valence stage contradicts skipping it");
+  int rings = 0;
+  internal::deform_to_fit_options(np, rings);  // the fit's parameters are checked before any work
+  stats.target_vertices = choose_parameter(get_parameter(np, internal_np::target_vertices), std::size_t(0));
+  stats.resolution = stats.target_vertices > 0 ? resolution_for_target_vertices(input, stats.target_vertices)
+                                               : choose_parameter(get_parameter(np, internal_np::resolution), 100);
+  if(stats.resolution < 1 || stats.resolution > 1024)
+    throw Bad_parameter("the resolution must lie in [1, 1024]");
+  const Sign_source signs = choose_parameter(get_parameter(np, internal_np::sign_source), Sign_source::patches);
+  const double budget = choose_parameter(get_parameter(np, internal_np::memory_budget), default_memory_budget);
+  if(!(budget > 0.)) throw Bad_parameter("the memory budget must be positive");
+
+  auto given = choose_parameter(get_parameter(np, internal_np::remeshing_visitor), Default_remeshing_visitor());
+  auto& visitor = internal::visitor_reference(given);
+  // Asks the visitor at a stage boundary; false ends the pipeline there.
+  const auto proceed = [&](Remeshing_stage stage, double fraction) {
+    Remeshing_progress p;
+    p.stage = stage;
+    p.fraction = fraction;
+    if(!visitor.keep_going(p)) stats.cancelled = true;
+    return !stats.cancelled;
+  };
+  const auto finish = [&]() {
+    if(num_faces(output) > 0) {
+      const internal::Component_accounting accounting =
+          internal::missing_components(input, output, std::sqrt(3.) * stats.initial_mesh.cube_size);
+      stats.input_components = accounting.input_components;
+      stats.input_components_missing = accounting.missing;
+      stats.largest_missing_component = accounting.largest_missing_diameter;
+    }
+    stats.seconds = seconds_since(start);
+    return stats;
+  };
+
+  // Zero-area input faces have no orientation to sign the cube corners
+  // with, and leaving them out cuts the patches of chapter 4 apart (holes in
+  // a closed input): the stages see a copy without them.
+  const TriangleMesh* surface = &input;
+  TriangleMesh repaired;
+  std::size_t degenerate = 0;
+  for(auto f : faces(input)) degenerate += Polygon_mesh_processing::is_degenerate_triangle_face(f, input);
+  if(degenerate > 0) {
+    copy_face_graph(input, repaired);
+    Polygon_mesh_processing::remove_degenerate_faces(repaired);
+    internal::collect_garbage_of(repaired, 0);
+    if(num_faces(repaired) > 0 && is_triangle_mesh(repaired)) {
+      surface = &repaired;
+      stats.degenerate_faces_removed = degenerate;
+    }
+  }
+
+  try {  // whatever throws, no partial mesh is left behind
+    // Chapter 4: the initial mesh, certified in [35.26, 90] by construction.
+    if(!proceed(Remeshing_stage::initial_mesh, 0.)) return finish();
+    visitor.stage_started(Remeshing_stage::initial_mesh);
+    auto stage_start = Clock::now();
+    const auto build = [&](int resolution, TriangleMesh& mesh) {
+      return nonobtuse_marching_cubes(
+          *surface, mesh,
+          parameters::combine(parameters::resolution(resolution), parameters::sign_source(signs),
+                              parameters::memory_budget(budget)));
+    };
+    stats.initial_mesh = build(stats.resolution, output);
+    if(stats.target_vertices > 0) {
+      // off by more than 10%: once more at the resolution scaled by the
+      // square root of the miss, kept if it builds a mesh
+      const double ratio = double(stats.target_vertices) / double((std::max)(std::size_t(1), vertices(output).size()));
+      const int redone =
+          int(std::lround((std::min)(1024., (std::max)(1., double(stats.resolution) * std::sqrt(ratio)))));
+      if((ratio < 1. / 1.1 || ratio > 1.1) && redone != stats.resolution) {
+        TriangleMesh second;
+        Marching_cubes_result r;
+        bool built = true;
+        try {
+          r = build(redone, second);
+        } catch(const Bad_input&) {
+          built = false;
+        }
+        if(built && num_faces(second) > 0) {
+          r.seconds += stats.initial_mesh.seconds;
+          stats.initial_mesh = std::move(r);
+          stats.trial_resolution = stats.resolution;
+          stats.resolution = redone;
+          output = std::move(second);
+        }
+      }
+    }
+    stats.initial_mesh.patch_faces.clear();
+    stats.initial_mesh.face_patch.clear();
+    if(num_faces(output) == 0)
+      throw Bad_input("the initial mesh is empty: the input is too small or too thin for resolution " +
+                                  std::to_string(stats.resolution));
+    visitor.stage_finished(Remeshing_stage::initial_mesh, seconds_since(stage_start));
+    if(last == Remeshing_stage::initial_mesh) return finish();
+
+    // Section 5.7: bad valences out.
+    if(valence_cleanup) {
+      if(!proceed(Remeshing_stage::valence, 0.)) return finish();
+      visitor.stage_started(Remeshing_stage::valence);
+      stage_start = Clock::now();
+      stats.valence = remove_bad_valence_vertices(
+          output, parameters::combine(
+                      parameters::vertex_split(choose_parameter(get_parameter(np, internal_np::vertex_split), true)),
+                      parameters::drum_subdivisions(k)));
+      stats.valence_run = true;
+      internal::collect_garbage_of(output, 0);
+      visitor.stage_finished(Remeshing_stage::valence, seconds_since(stage_start));
+      if(last == Remeshing_stage::valence) return finish();
+    }
+
+    // Chapter 5: deform-to-fit, with the caller's fit parameters (the relay
+    // takes the place of a fit_visitor among them).
+    if(!proceed(Remeshing_stage::fit, 0.)) return finish();
+    visitor.stage_started(Remeshing_stage::fit);
+    stage_start = Clock::now();
+    auto relay = keep_going_relay([&visitor](const Deform_to_fit_statistics& s) {
+      Remeshing_progress p;
+      p.stage = Remeshing_stage::fit;
+      p.fit = &s;
+      return visitor.keep_going(p);
+    });
+    stats.fit = deform_to_fit(output, *surface,
+                              parameters::combine(np, parameters::fit_visitor(std::ref(relay)),
+                                                  CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, output))));
+    stats.fit_run = true;
+    if(stats.fit.cancelled) stats.cancelled = true;
+    visitor.stage_finished(Remeshing_stage::fit, seconds_since(stage_start));
+    return finish();
+  } catch(...) {
+    clear(output);
+    throw;
+  }
+}
+
+} // namespace internal
+} // namespace Nonobtuse_remeshing
+} // namespace CGAL
+
+#endif // CGAL_NONOBTUSE_REMESHING_INTERNAL_REMESHING_PIPELINE_H

@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Untangling after deform-to-fit (beyond the thesis): moves that remove the
+// self-intersections a fit can make where the input is thinner than a cube,
+// each certified exactly like any move of the optimizer (Deform_to_fit.h),
+// whose friends these functions are.
+
+#ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_UNTANGLING_H
+#define CGAL_NONOBTUSE_REMESHING_INTERNAL_UNTANGLING_H
+
+#include <CGAL/Nonobtuse_remeshing/internal/epick_points.h>
+
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <Eigen/Dense>
+
+#include <chrono>
+#include <cstddef>
+#include <iterator>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Nonobtuse_remeshing {
+namespace internal {
+
+template <typename Fit>
+bool untangle_attempt(Fit& fit, const std::vector<std::size_t>& region, typename Fit::Goal goal,
+                      std::vector<std::pair<typename Fit::face_descriptor, typename Fit::face_descriptor> >& pairs,
+                      bool strictly);
+
+// Beyond the thesis: where the input is thinner than a cube, the fit can
+// fold the mesh through itself. The vertices of each self-intersecting
+// pair and the rings around them, wider each round, take constrained
+// smoothing moves, or else move back towards their positions in the
+// initial mesh (constrained and certified like any other move), keeping
+// only what lowers the number of pairs, for at most five rounds; what
+// remains is counted.
+template <typename Fit>
+void untangle(Fit& fit)
+{
+  using Clock = std::chrono::steady_clock;
+  using face_descriptor = typename Fit::face_descriptor;
+  using vertex_descriptor = typename Fit::vertex_descriptor;
+  const Clock::time_point start = Clock::now();
+  std::vector<std::pair<face_descriptor, face_descriptor> > pairs;
+  Polygon_mesh_processing::self_intersections(faces(fit.mesh_), fit.mesh_, std::back_inserter(pairs),
+                                              CGAL::parameters::vertex_point_map(fit.points_).geom_traits(Epick()));
+  fit.stats_.intersecting_pairs_found = pairs.size();
+  for(int round = 1; round <= 5 && !pairs.empty() && !fit.stats_.budget_exhausted && !fit.stats_.cancelled; ++round) {
+    std::vector<bool> chosen(fit.vertices_.size(), false);
+    std::vector<std::size_t> front;
+    for(const auto& p : pairs)
+      for(face_descriptor f : {p.first, p.second})
+        for(vertex_descriptor w : vertices_around_face(halfedge(f, fit.mesh_), fit.mesh_))
+          if(!chosen[get(fit.index_, w)]) {
+            chosen[get(fit.index_, w)] = true;
+            front.push_back(get(fit.index_, w));
+          }
+    const std::vector<std::size_t> own = front;
+    std::vector<std::size_t> region = front;
+    for(int ring = 0; ring < round; ++ring) {
+      std::vector<std::size_t> next;
+      for(std::size_t i : front)
+        for(vertex_descriptor w : vertices_around_target(halfedge(fit.vertices_[i], fit.mesh_), fit.mesh_))
+          if(!chosen[get(fit.index_, w)]) {
+            chosen[get(fit.index_, w)] = true;
+            next.push_back(get(fit.index_, w));
+          }
+      region.insert(region.end(), next.begin(), next.end());
+      front.swap(next);
+    }
+    // Constrained smoothing of the region, kept unless it adds pairs; if
+    // pairs are left, moves of the pairs' own vertices back towards the
+    // initial mesh, kept only if they remove pairs. What is not kept is
+    // rolled back to the certified state before it.
+    if(untangle_attempt(fit, region, Fit::Goal::smooth, pairs, false)) continue;
+    untangle_attempt(fit, own, Fit::Goal::restore, pairs, true);
+  }
+  fit.stats_.intersecting_pairs = pairs.size();
+  fit.stats_.untangling_seconds = fit.seconds_since(start);
+}
+
+// Moves the vertices of `region` towards `goal` (three passes); keeps the
+// moves if they leave fewer pairs (or, unless `strictly`, as many) and
+// updates `pairs`, else rolls them back. Returns whether pairs were removed.
+template <typename Fit>
+bool untangle_attempt(Fit& fit, const std::vector<std::size_t>& region, typename Fit::Goal goal,
+                      std::vector<std::pair<typename Fit::face_descriptor, typename Fit::face_descriptor> >& pairs,
+                      bool strictly)
+{
+  using face_descriptor = typename Fit::face_descriptor;
+  using Point = Epick::Point_3;
+  std::vector<Point> saved;
+  std::vector<face_descriptor> saved_hints;
+  for(std::size_t i : region) {
+    saved.push_back(fit.point(fit.vertices_[i]));
+    saved_hints.push_back(fit.hint_[i]);
+  }
+  std::size_t moves = 0;
+  for(int pass = 0; pass < 3; ++pass)
+    for(std::size_t i : region) {
+      Eigen::Vector3d best;
+      double improvement;
+      if(fit.stopped()) break;
+      if(fit.solve(i, goal, best, improvement) && improvement > fit.threshold_ && fit.apply(i, best, false)) ++moves;
+    }
+  std::vector<std::pair<face_descriptor, face_descriptor> > left;
+  Polygon_mesh_processing::self_intersections(
+      faces(fit.mesh_), fit.mesh_, std::back_inserter(left),
+      CGAL::parameters::vertex_point_map(fit.points_).geom_traits(Epick()));
+  if(left.size() < pairs.size() || (!strictly && left.size() == pairs.size())) {
+    const bool removed = left.size() < pairs.size();
+    fit.stats_.untangling_moves += moves;
+    pairs.swap(left);
+    return removed;
+  }
+  fit.stats_.moves -= moves;
+  for(std::size_t j = 0; j < region.size(); ++j) {
+    put_point(fit.vpm_, fit.vertices_[region[j]], saved[j]);
+    fit.hint_[region[j]] = saved_hints[j];
+  }
+  return false;
+}
+
+} // namespace internal
+} // namespace Nonobtuse_remeshing
+} // namespace CGAL
+
+#endif // CGAL_NONOBTUSE_REMESHING_INTERNAL_UNTANGLING_H
