@@ -44,8 +44,8 @@ auto decimation_parameters(const Decimation_settings& settings, Decimation_progr
 {
   const int border = settings.min_border_valence >= 0 ? settings.min_border_valence : settings.min_valence - 1;
   return NR::parameters::combine(
-      NR::parameters::max_error(settings.max_error_percent > 0. ? settings.max_error_percent / 100.
-                                                                : std::numeric_limits<double>::infinity()),
+      NR::parameters::max_error(settings.max_error_given ? settings.max_error_percent / 100.
+                                                         : std::numeric_limits<double>::infinity()),
       NR::parameters::min_interior_valence(std::size_t(settings.min_valence)),
       NR::parameters::min_border_valence(std::size_t((std::max)(border, 0))),
       NR::parameters::relaxation(settings.relaxation),
@@ -71,8 +71,7 @@ void Decimation_settings::add_options(po::options_description& options)
 void Decimation_settings::check(const po::variables_map& vm)
 {
   relaxation = vm.count("no-relaxation") == 0;
-  if(vm.count("max-error") && !(max_error_percent > 0.))  // 0 stands for none below
-    throw NR::Bad_parameter("--max-error must be positive (a percentage of the diagonal)");
+  max_error_given = vm.count("max-error") > 0;
 }
 
 void Decimation_settings::check_parameters(const std::vector<double>& ratios) const

@@ -21,7 +21,8 @@ namespace nonobtuse_cli {
 
 struct Decimation_settings
 {
-  double max_error_percent = 0.;  // 0: none
+  double max_error_percent = 0.;
+  bool max_error_given = false;  // false: no maximum error
   int min_valence = 4;
   int min_border_valence = -1;    // -1: min_valence - 1
   bool relaxation = true;
