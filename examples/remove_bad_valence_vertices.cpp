@@ -3,11 +3,13 @@
 // Stage 2 (thesis, section 5.7): removal of bad-valence vertices from the
 // initial mesh, and vertex splits for those that removal cannot reach. The
 // counts before and after are the columns of the thesis's Table 7.1.
+// The mesh is a CGAL::Polyhedron_3 here: every function of the package
+// takes any FaceGraph (the other examples use CGAL::Surface_mesh).
 //
 //   remove_bad_valence_vertices INPUT OUTPUT [RESOLUTION]
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
+#include <CGAL/Polyhedron_3.h>
 #include <CGAL/Nonobtuse_remeshing/mesh_io.h>
 #include <CGAL/Nonobtuse_remeshing/nonobtuse_marching_cubes.h>
 #include <CGAL/Nonobtuse_remeshing/remove_bad_valence_vertices.h>
@@ -17,7 +19,7 @@
 #include <stdexcept>
 
 namespace NR = CGAL::Nonobtuse_remeshing;
-using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
+using Mesh = CGAL::Polyhedron_3<CGAL::Exact_predicates_inexact_constructions_kernel>;
 
 int main(int argc, char** argv)
 {
@@ -30,7 +32,6 @@ int main(int argc, char** argv)
     NR::read_triangle_mesh(argv[1], input);
     NR::nonobtuse_marching_cubes(input, mesh, NR::parameters::resolution(argc == 4 ? std::atoi(argv[3]) : 60));
     const NR::Bad_valence_removal_statistics s = NR::remove_bad_valence_vertices(mesh);
-    mesh.collect_garbage();  // removals leave garbage in a Surface_mesh
     std::cout << "vertices " << s.vertices_before << " -> " << s.vertices_after << "; bad valences (v2, v3, interior v4) "
               << s.before.valence_2 << ", " << s.before.valence_3() << ", " << s.before.interior_valence_4 << " -> "
               << s.after.valence_2 << ", " << s.after.valence_3() << ", " << s.after.interior_valence_4 << "; "

@@ -425,10 +425,10 @@ TEST(Cli, EachExceptionTypeHasItsExitCode)
       {"report " + data("sphere.off") + " --reference " + data("sphere.off") + " --hausdorff-error 0",
        "usage error: the Hausdorff error bound", 2},
       // NR::Bad_input: the mesh, not the parameters
-      {"remesh " + data("sphere.off") + " -o " + out + " --resolution 1", "bad input:", 3},
+      {"remesh " + data("sphere.off") + " -o " + out + " --resolution 1 -q", "bad input:", 3},
       {"remesh " + folder + "/missing.off -o " + out, "bad input:", 3},
       // NR::Memory_budget_exceeded, a Bad_input
-      {"remesh " + data("sphere.off") + " -o " + out + " --memory-limit 0.0001", "bad input:", 3},
+      {"remesh " + data("sphere.off") + " -o " + out + " --memory-limit 0.0001 -q", "bad input:", 3},
       // NR::Output_error
       {"remesh " + data("sphere.off") + " -o " + folder + "/no/such/folder/out.off", "output error:", 3},
   };

@@ -11,6 +11,7 @@
 
 #include <CGAL/nonobtuse_remeshing.h>
 
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -18,6 +19,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <unistd.h>
@@ -95,7 +97,8 @@ std::vector<std::string> run_stages(const std::string& input_name)
 
   const auto report = NR::quality_report(remeshed, &input);
   EXPECT_TRUE(report.certified);
-  EXPECT_TRUE(report.distance && report.distance->hausdorff_symmetric < 5.);  // % of the diagonal
+  EXPECT_TRUE(report.distance && report.distance->hausdorff_symmetric < 10.)  // % of the diagonal, at N = 16
+      << (report.distance ? report.distance->hausdorff_symmetric : -1.);
   return files;
 }
 
@@ -115,14 +118,18 @@ TEST(GenericMeshes, SimpleCartesianSurfaceMeshGivesTheReferenceFiles)
 
 TEST(GenericMeshes, PointsInAPropertyMapOfTheUser)
 {
-  // The input's points shifted by (10, 0, 0) into a property map of their own:
-  // every stage must read that map, and write the output's own map.
+  // The input's points shifted along x by twice its diagonal into a property
+  // map of their own: every stage must read that map, and write the output's
+  // own map (its bounding box is then the shifted input's, up to the fit).
   Reference_mesh input = nonobtuse_test::load("mesh_with_border.off");
   using Point = Reference_mesh::Point;
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(input);
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
   auto shifted = input.add_property_map<Reference_mesh::Vertex_index, Point>("v:shifted").first;
   for(auto v : vertices(input)) {
     const Point& p = input.point(v);
-    put(shifted, v, Point(p.x() + 10., p.y(), p.z()));
+    put(shifted, v, Point(p.x() + 2. * diagonal, p.y(), p.z()));
   }
   Reference_mesh output;
   auto written = output.add_property_map<Reference_mesh::Vertex_index, Point>("v:written").first;
@@ -132,11 +139,13 @@ TEST(GenericMeshes, PointsInAPropertyMapOfTheUser)
                        CGAL::parameters::vertex_point_map(written));
   ASSERT_GT(faces(output).size(), 0u);
   EXPECT_TRUE(NR::certify_angle_bounds(output, CGAL::parameters::vertex_point_map(written)).is_certified());
-  double min_x = 1e300;
-  for(auto v : vertices(output)) min_x = (std::min)(min_x, get(written, v).x());
-  double input_min_x = 1e300;
-  for(auto v : vertices(input)) input_min_x = (std::min)(input_min_x, get(shifted, v).x());
-  EXPECT_NEAR(min_x, input_min_x, 0.05 * 10.);
+  CGAL::Bbox_3 out_box, in_box;
+  for(auto v : vertices(output)) out_box += get(written, v).bbox();
+  for(auto v : vertices(input)) in_box += get(shifted, v).bbox();
+  for(int a = 0; a < 3; ++a) {
+    EXPECT_NEAR(out_box.min(a), in_box.min(a), 0.05 * diagonal) << "axis " << a;
+    EXPECT_NEAR(out_box.max(a), in_box.max(a), 0.05 * diagonal) << "axis " << a;
+  }
 
   // The decimation and the fit through the same maps.
   const NR::Angle_bounded_decimation_statistics d =
