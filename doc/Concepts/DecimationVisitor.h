@@ -10,9 +10,9 @@ decimation.
 A visitor given by value is copied and the copy is called, so its type must be copy
 constructible; given as `std::ref(visitor)`, the visitor itself is called and keeps its state.
 
-\cgalHasModel{`CGAL::Nonobtuse_remeshing::Default_decimation_visitor`}
+\cgalHasModel{`CGAL::Nonobtuse_remeshing::Default_visitor`}
 
-The model `Default_decimation_visitor` never cancels.
+The model `Default_visitor` never cancels.
 */
 class DecimationVisitor
 {

@@ -12,9 +12,9 @@ constructible; given as `std::ref(visitor)`, the visitor itself is called and ke
 the fit's progress on to its `RemeshingVisitor`; a `fit_visitor` among its named parameters is not
 used.
 
-\cgalHasModel{`CGAL::Nonobtuse_remeshing::Default_deform_to_fit_visitor`}
+\cgalHasModel{`CGAL::Nonobtuse_remeshing::Default_visitor`}
 
-The model `Default_deform_to_fit_visitor` never cancels.
+The model `Default_visitor` never cancels.
 
 \sa `RemeshingVisitor`
 */

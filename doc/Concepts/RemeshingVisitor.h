@@ -13,9 +13,9 @@ The stages are those of `CGAL::Nonobtuse_remeshing::Remeshing_stage`, in their o
 that is not run (the valence stage with `valence_cleanup` false, the stages after `stop_after`)
 causes no call.
 
-\cgalHasModel{`CGAL::Nonobtuse_remeshing::Default_remeshing_visitor`}
+\cgalHasModel{`CGAL::Nonobtuse_remeshing::Default_visitor`}
 
-The model `Default_remeshing_visitor` does nothing and never cancels.
+The model `Default_visitor` does nothing and never cancels.
 
 \sa `DeformToFitVisitor`
 */
