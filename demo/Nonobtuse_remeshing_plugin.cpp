@@ -63,7 +63,7 @@ namespace NR = CGAL::Nonobtuse_remeshing;
 
 namespace {
 
-QString stage_name(NR::Remeshing_stage stage)
+QString stage_label(NR::Remeshing_stage stage)
 {
   return QString::fromLatin1(NR::stage_description(stage));
 }
@@ -136,12 +136,12 @@ struct Remeshing_visitor
     stage = s;
     int begin, end;
     stage_span(s, begin, end);
-    progress->update(begin, QObject::tr("Nonobtuse remeshing: %1...").arg(stage_name(s)), true);
-    std::cout << "nonobtuse_remeshing: stage " << stage_name(s).toStdString() << std::endl;
+    progress->update(begin, QObject::tr("Nonobtuse remeshing: %1...").arg(stage_label(s)), true);
+    std::cout << "nonobtuse_remeshing: stage " << stage_label(s).toStdString() << std::endl;
   }
   void stage_finished(NR::Remeshing_stage s, double seconds)
   {
-    std::cout << "nonobtuse_remeshing: stage " << stage_name(s).toStdString() << " done in " << seconds
+    std::cout << "nonobtuse_remeshing: stage " << stage_label(s).toStdString() << " done in " << seconds
               << " s" << std::endl;
   }
   bool keep_going(const NR::Remeshing_progress& p)
@@ -150,7 +150,7 @@ struct Remeshing_visitor
     stage_span(p.stage, begin, end);
     // The fit cannot tell how far it is: a busy bar then.
     const int value = p.fraction >= 0. ? begin + int(std::lround(p.fraction * double(end - begin))) : -1;
-    QString label = QObject::tr("Nonobtuse remeshing: %1").arg(stage_name(p.stage));
+    QString label = QObject::tr("Nonobtuse remeshing: %1").arg(stage_label(p.stage));
     if(p.fit != nullptr)
       label += QObject::tr("\n%1: %2 moves, RMS distance %3 % of the diagonal")
                    .arg(p.fit->stage == NR::Deform_to_fit_stage::smoothing ? QObject::tr("smoothing")
