@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The input surface as deform-to-fit sees it (thesis, section 5.3): the
-// closest input triangle of a point, from a CGAL AABB tree at the start and
-// then by a local search within three rings of the previous one (falling back
-// to the tree when the best candidate lies on the search's outer ring), its
+// closest input triangle of a point, from a CGAL AABB tree (after a move, its
+// search starts from the previous closest triangle), its
 // fitting quadric, the closest point on the input's border, and the feature
 // samples (vertices, points along sharp and border edges) that attract the
 // fitted mesh.
@@ -45,7 +44,6 @@ class Closest_triangle
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   using Points = Epick_points_t<VertexPointMap>;
   using Face_primitive = AABB_face_graph_triangle_primitive<TriangleMesh, Points>;
-  using Face_index_map = decltype(get_initialized_face_index_map(std::declval<const TriangleMesh&>()));
   using Face_tree = AABB_tree<AABB_traits<Epick, Face_primitive> >;
   using Segment_iterator = typename std::vector<Epick::Segment_3>::const_iterator;
   using Segment_primitive = AABB_segment_primitive<Epick, Segment_iterator>;
@@ -54,7 +52,7 @@ class Closest_triangle
 public:
   Closest_triangle(const TriangleMesh& input, VertexPointMap vpm, int quadric_rings)
     : input_(input), points_(epick_points(vpm)), tree_(faces(input).first, faces(input).second, input, points_),
-      rings_(quadric_rings), face_index_(get_initialized_face_index_map(input)), mark_(num_faces(input), 0u)
+      rings_(quadric_rings)
   {
     tree_.accelerate_distance_queries();
     for(auto h : halfedges(input))
@@ -71,44 +69,9 @@ public:
 
   face_descriptor closest(const Point& p) const { return tree_.closest_point_and_primitive(p).second; }
 
-  /// Closest triangle among the three rings around `hint` (faces sharing a
-  /// vertex, ring by ring); the tree answers when the best one is on the
-  /// outermost ring, where a closer one may lie beyond, and when the rings
-  /// hold more than `ring_budget` faces (long, thin input triangles, such as
-  /// a many-sided polygon's triangulation, put a large part of the input
-  /// within three rings), so that a query costs at most the budget and one
-  /// tree query whatever the input's triangle shapes. Faces already seen are
-  /// marked by a per-query stamp, not searched for.
-  face_descriptor closest_near(const Point& p, face_descriptor hint) const
-  {
-    if(++stamp_ == 0) {  // wrapped around: clear the marks
-      std::fill(mark_.begin(), mark_.end(), 0u);
-      stamp_ = 1;
-    }
-    std::vector<face_descriptor> ring = {hint}, next;
-    mark_[get(face_index_, hint)] = stamp_;
-    std::size_t visited = 1;
-    face_descriptor best = hint;
-    double best_distance = squared_distance(p, triangle(hint));
-    int best_ring = 0;
-    for(int r = 1; r <= 3; ++r) {
-      next.clear();
-      for(face_descriptor f : ring)
-        for(auto v : vertices_around_face(halfedge(f, input_), input_))
-          for(face_descriptor g : faces_around_target(halfedge(v, input_), input_)) {
-            if(g == boost::graph_traits<TriangleMesh>::null_face() || mark_[get(face_index_, g)] == stamp_) continue;
-            if(++visited > ring_budget) return closest(p, best);
-            mark_[get(face_index_, g)] = stamp_;
-            next.push_back(g);
-            const double d = squared_distance(p, triangle(g));
-            if(d < best_distance) { best_distance = d; best = g; best_ring = r; }
-          }
-      ring.swap(next);
-    }
-    return best_ring == 3 ? closest(p, best) : best;
-  }
-
-  /// The tree's answer, its search started from `hint`'s closest point.
+  /// The closest triangle, its search started from `hint`'s closest point:
+  /// after a small move the old closest triangle is close, and the tree
+  /// prunes everything farther than it at once.
   face_descriptor closest(const Point& p, face_descriptor hint) const
   {
     const Point on_hint = Epick().construct_projected_point_3_object()(triangle(hint), p);
@@ -209,12 +172,6 @@ private:
   Points points_;
   Face_tree tree_;
   int rings_;
-  Face_index_map face_index_;
-  // faces visited by closest_near (three rings of a regular mesh hold about
-  // 80 faces, at most 171 on the shipped meshes)
-  static constexpr std::size_t ring_budget = 256;
-  mutable std::vector<unsigned> mark_;  // closest_near's visit stamps, per face index
-  mutable unsigned stamp_ = 0;
   std::vector<Epick::Segment_3> border_;
   Segment_tree border_tree_;
 };

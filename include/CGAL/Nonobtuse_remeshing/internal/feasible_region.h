@@ -33,6 +33,7 @@
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_FEASIBLE_REGION_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_FEASIBLE_REGION_H
 
+#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -91,6 +92,7 @@ inline Half_space through(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, 
 inline bool edge_feasible_region(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& y,
                                  int k, std::vector<Half_space>& out)
 {
+  CGAL_precondition(k >= 1 && k <= 16);
   const double sqrt3 = std::sqrt(3.);
   const Eigen::Vector3d q = 0.5 * (a + b);
   const double L = (b - a).norm();
@@ -116,11 +118,17 @@ inline bool edge_feasible_region(const Eigen::Vector3d& a, const Eigen::Vector3d
   // barrel's end circles (the wider end), split into k slices per side.
   const double alpha = std::abs(e.dot(u));
   const double theta_k = std::acos(std::sqrt((1. - alpha) / (1. + alpha)) / (2. * sqrt3));
-  auto direction = [&](double theta) { return Eigen::Vector3d(std::cos(theta) * n0 + std::sin(theta) * b0); };
+  // the directions at angles i theta_k / k, i = 0..k, from n0 towards +-b0
+  std::array<double, 17> cosine, sine;  // k <= 16
+  for(int i = 0; i <= k; ++i) {
+    cosine[i] = std::cos(theta_k * i / k);
+    sine[i] = std::sin(theta_k * i / k);
+  }
   for(int side : {1, -1}) {
+    auto direction = [&](int i) { return Eigen::Vector3d(cosine[i] * n0 + (side * sine[i]) * b0); };
     for(int i = 1; i <= k; ++i) {
-      const Eigen::Vector3d d_prev = direction(side * theta_k * (i - 1) / k);
-      const Eigen::Vector3d d = direction(side * theta_k * i / k);
+      const Eigen::Vector3d d_prev = direction(i - 1);
+      const Eigen::Vector3d d = direction(i);
       const Eigen::Vector3d m_prev = a + sqrt3 * L * d_prev, m = a + sqrt3 * L * d;
       const Eigen::Vector3d n_prev = b + sqrt3 * L * d_prev, n = b + sqrt3 * L * d;
       const Eigen::Vector3d w = q + (1. + 0.5 * sqrt3) * L * d;
