@@ -1,15 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // What the guarantee costs: each input remeshed by our pipeline
-// (nonobtuse_remesh at resolution N) and by CGAL's isotropic_remeshing, its
+// (nonobtuse_remesh at resolution N, or for about V vertices) and by CGAL's
+// isotropic_remeshing, its
 // target edge length tuned until its output has our vertex count (within
 // 2%, at most 10 runs; the closest run is shown, with its seconds). Per method:
 // seconds, vertices, min and max angle, % of the corners above 90 and below
 // 30 degrees (exact predicates), and the symmetric Hausdorff distance to the
-// input in % of its bounding-box diagonal. Not a test: run by hand, numbers
-// go to the README and the issue notes.
+// input in % of its bounding-box diagonal; last, the median over the meshes
+// of our time over isotropic remeshing's. Not a test: run by hand, numbers go
+// to the README and the issue notes.
 //
-//   bench_vs_isotropic [N] [--iterations I] mesh.off...   (N defaults to 100, I to 3)
+//   bench_vs_isotropic [N | --target-vertices V] [--iterations I] mesh.off...
+//   (N defaults to 100, I to 3)
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -17,6 +20,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -56,17 +60,22 @@ void row(const std::string& name, const char* method, double seconds, const Mesh
 int main(int argc, char** argv)
 {
   int resolution = 100, iterations = 3;
+  long target_vertices = 0;
   std::vector<std::string> paths;
   for(int i = 1; i < argc; ++i) {
     if(std::strcmp(argv[i], "--iterations") == 0 && i + 1 < argc) iterations = std::atoi(argv[++i]);
+    else if(std::strcmp(argv[i], "--target-vertices") == 0 && i + 1 < argc) target_vertices = std::atol(argv[++i]);
     else if(std::isdigit(static_cast<unsigned char>(argv[i][0]))) resolution = std::atoi(argv[i]);
     else paths.push_back(argv[i]);
   }
   if(paths.empty()) {
-    std::cerr << "usage: bench_vs_isotropic [N] [--iterations I] mesh.off...\n";
+    std::cerr << "usage: bench_vs_isotropic [N | --target-vertices V] [--iterations I] mesh.off...\n";
     return 2;
   }
-  std::cout << "N = " << resolution << ", isotropic_remeshing with " << iterations << " iterations\n"
+  std::vector<double> ratios;
+  if(target_vertices > 0) std::cout << "V = " << target_vertices;
+  else std::cout << "N = " << resolution;
+  std::cout << ", isotropic_remeshing with " << iterations << " iterations\n"
             << "mesh                  method      seconds vertices  min-ang  max-ang    %>90     %<30  Hausdorff%\n";
   for(const std::string& path : paths) {
     const std::string name = path.substr(path.find_last_of('/') + 1);
@@ -75,8 +84,12 @@ int main(int argc, char** argv)
 
     Mesh ours;
     auto start = std::chrono::steady_clock::now();
-    NR::nonobtuse_remesh(input, ours, NR::parameters::resolution(resolution));
-    row(name, "nonobtuse", seconds_since(start), ours, input);
+    if(target_vertices > 0)
+      NR::nonobtuse_remesh(input, ours, NR::parameters::target_vertices(std::size_t(target_vertices)));
+    else
+      NR::nonobtuse_remesh(input, ours, NR::parameters::resolution(resolution));
+    const double our_seconds = seconds_since(start);
+    row(name, "nonobtuse", our_seconds, ours, input);
 
     // an equilateral mesh of edge l has about 2 A / (sqrt(3) l^2) vertices
     const double target = double(vertices(ours).size());
@@ -103,6 +116,11 @@ int main(int argc, char** argv)
     iso = best;
     seconds = best_seconds;
     row(name, "isotropic", seconds, iso, input);
+    ratios.push_back(our_seconds / seconds);
   }
+  std::sort(ratios.begin(), ratios.end());
+  const std::size_t m = ratios.size();
+  std::cout << "median time ratio (nonobtuse / isotropic): " << std::setprecision(3)
+            << (m % 2 ? ratios[m / 2] : 0.5 * (ratios[m / 2 - 1] + ratios[m / 2])) << "\n";
   return 0;
 }

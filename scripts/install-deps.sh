@@ -9,5 +9,5 @@ $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
   build-essential cmake \
   libcgal-dev libeigen3-dev libboost-dev libboost-program-options-dev \
-  libgmp-dev libmpfr-dev libgtest-dev nlohmann-json3-dev >/dev/null
+  libgmp-dev libmpfr-dev libgtest-dev nlohmann-json3-dev libtbb-dev >/dev/null
 echo "install-deps: dependencies installed"

@@ -50,6 +50,7 @@ auto decimation_parameters(const Decimation_settings& settings, Decimation_progr
       NR::parameters::min_border_valence(std::size_t((std::max)(border, 0))),
       NR::parameters::relaxation(settings.relaxation),
       NR::parameters::drum_subdivisions(settings.drum_subdivisions),
+      NR::parameters::number_of_threads(settings.threads),
       NR::parameters::decimation_visitor(std::ref(progress)));
 }
 
@@ -160,6 +161,8 @@ int decimate_command(int argc, char** argv)
     ("target-vertices", po::value<long long>(&target_vertices), "vertices to keep (instead of --ratio)")
     ("drum-subdivisions,k", po::value<int>(&settings.drum_subdivisions)->default_value(2),
      "drum planes per side in the feasible regions, in [1, 16]")
+    ("threads", po::value<int>(&settings.threads)->default_value(0),
+     "threads of the relaxation (0: one per core); the result is the same for any number")
     ("quiet,q", po::bool_switch(&settings.quiet), "no progress line")
     ("json", po::value<std::string>(&json_path), "also write statistics and the quality report as JSON");
   settings.add_options(options);

@@ -27,6 +27,7 @@ struct Decimation_settings
   int min_border_valence = -1;    // -1: min_valence - 1
   bool relaxation = true;
   int drum_subdivisions = 2;
+  int threads = 0;                // --threads, 0: one per core
   bool quiet = false;
   std::string progress_prefix;    // e.g. "[4/4] " when a stage of remesh
 

@@ -58,7 +58,8 @@ namespace internal_np {
   X(valence_cleanup_t, valence_cleanup)   /* pipeline: run section 5.7 */    \
   X(stop_after_t, stop_after)             /* pipeline: last stage to run */  \
   X(remeshing_visitor_t, remeshing_visitor) /* pipeline: progress, cancel */ \
-  X(memory_budget_t, memory_budget)       /* bytes the initial mesh may use */
+  X(memory_budget_t, memory_budget)       /* bytes the initial mesh may use */ \
+  X(number_of_threads_t, number_of_threads) /* workers, 0: one per core */
 
 #define CGAL_NONOBTUSE_DECLARE_TAG(TAG, NAME) enum TAG { NAME };
 CGAL_NONOBTUSE_TAGS(CGAL_NONOBTUSE_DECLARE_TAG)

@@ -56,6 +56,7 @@ struct Angle_bounded_decimation_options
   double first_ceiling = 1e-3;         // fraction of the diagonal
   double relaxation_tolerance = 1e-3;  // the fit's tolerance
   int max_rounds = 64;
+  int threads = 0;  // the relaxation's workers, 0: one per core
 };
 
 // Reads and checks the parameters shared by both entry points; throws
@@ -71,6 +72,8 @@ Angle_bounded_decimation_options decimation_options(const NamedParameters& np)
   o.min_border_valence = choose_parameter(get_parameter(np, internal_np::min_border_valence), o.min_border_valence);
   o.max_error = choose_parameter(get_parameter(np, internal_np::max_error), o.max_error);
   o.relaxation = choose_parameter(get_parameter(np, internal_np::relaxation), o.relaxation);
+  o.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), o.threads);
+  if(o.threads < 0) throw Bad_parameter("the number of threads must be at least 0 (0: one per core)");
   if(o.drum_subdivisions < 1 || o.drum_subdivisions > 16)
     throw Bad_parameter("the drum subdivisions k must lie in [1, 16]");
   if(o.min_interior_valence < 3 || o.min_interior_valence > 12)
@@ -202,6 +205,7 @@ private:
   {
     Deform_to_fit_options o;
     o.tolerance = options_.relaxation_tolerance;
+    o.threads = options_.threads;
     // the decimation's visitor decides
     auto fit_visitor = keep_going_relay([this](const Deform_to_fit_statistics&) { return visitor_.keep_going(stats_); });
     Deform_to_fit<TriangleMesh, VertexPointMap, Input, decltype(fit_visitor)> fit(mesh_, vpm_, closest,

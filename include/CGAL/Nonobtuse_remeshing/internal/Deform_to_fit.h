@@ -16,6 +16,7 @@
 #include <CGAL/Nonobtuse_remeshing/internal/feasible_region.h>
 #include <CGAL/Nonobtuse_remeshing/internal/feature_attraction.h>
 #include <CGAL/Nonobtuse_remeshing/internal/fit_objective.h>
+#include <CGAL/Nonobtuse_remeshing/internal/parallel.h>
 #include <CGAL/Nonobtuse_remeshing/internal/small_qp.h>
 #include <CGAL/Nonobtuse_remeshing/internal/untangling.h>
 #include <CGAL/Nonobtuse_remeshing/parameters.h>
@@ -30,6 +31,7 @@
 #include <algorithm>
 #include <chrono>
 #include <functional>
+#include <memory>
 #include <cmath>
 #include <queue>
 #include <utility>
@@ -52,6 +54,7 @@ struct Deform_to_fit_options
   bool early_smoothing = true;
   bool tangential_smoothing = true;
   bool attract_features = true;
+  int threads = 0;  // 0: one per core
 };
 
 // Reads and checks the fit's named parameters; throws Bad_parameter
@@ -72,7 +75,9 @@ Deform_to_fit_options deform_to_fit_options(const NamedParameters& np, int& ring
   o.early_smoothing = choose_parameter(get_parameter(np, internal_np::early_smoothing), o.early_smoothing);
   o.tangential_smoothing = choose_parameter(get_parameter(np, internal_np::tangential_smoothing), o.tangential_smoothing);
   o.attract_features = choose_parameter(get_parameter(np, internal_np::attract_features), o.attract_features);
+  o.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), o.threads);
   rings = choose_parameter(get_parameter(np, internal_np::quadric_rings), 0);
+  if(o.threads < 0) throw Bad_parameter("the number of threads must be at least 0 (0: one per core)");
   if(!(o.alpha >= 0. && o.alpha <= 1.)) throw Bad_parameter("alpha must lie in [0, 1]");
   if(o.drum_subdivisions < 1 || o.drum_subdivisions > 16)
     throw Bad_parameter("the drum subdivisions k must lie in [1, 16]");
@@ -99,7 +104,8 @@ public:
                 const Deform_to_fit_options& options, Visitor& visitor)
     : mesh_(mesh), vpm_(vpm), points_(epick_points(vpm)), input_(input), options_(options), visitor_(visitor), diagonal_(diagonal),
       threshold_(CGAL::square(options.tolerance * diagonal)),
-      index_(get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh))
+      index_(get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh)), pool_(options.threads),
+      workspaces_(std::size_t(pool_.workers()))
   {
     for(vertex_descriptor v : vertices(mesh_)) {
       put(index_, v, vertices_.size());
@@ -107,10 +113,12 @@ public:
     }
     const std::size_t n = vertices_.size();
     hint_.resize(n);
-    for(std::size_t i = 0; i < n; ++i) hint_[i] = input_.closest(point(vertices_[i]));
+    pool_.for_each(n, [&](std::size_t i, int) { hint_[i] = input_.closest(point(vertices_[i])); });
     target_.resize(n);
     stamp_.assign(n, 0);
     dirty_.assign(n, false);
+    claimed_.assign(n, false);
+    colour_classes();
     stats_.vertices = n;
     for(std::size_t i = 0; i < n; ++i) initial_.push_back(position(i));
     classify_borders();
@@ -126,22 +134,31 @@ public:
                                                    point(target(halfedge(e, mesh_), mesh_))));
       const double spacing = length / double((std::max)(std::size_t(1), std::size_t(num_edges(mesh_))));
       samples_ = input_.feature_samples(spacing);
+      owners_ = std::make_unique<Feature_sample_owners>(samples_, on_input_border_, spacing);
     }
     attracted_begin_.assign(n + 1, 0);
     stats_.feature_samples = samples_.size();
   }
 
+  // Runs the fit on the pool's workers.
+  Deform_to_fit_statistics run()
+  {
+    pool_.execute([this] { optimize(); });
+    return stats_;
+  }
+
+private:
   // Optimization first and last, with the smoothing passes in between
   // (thesis, 5.5); early smoothing (5.6) starts a smoothing pass when the
   // queue first stalls instead of completing that phase with full updates.
-  Deform_to_fit_statistics run()
+  void optimize()
   {
     start_ = Clock::now();
     phase_start_ = start_;
     int smoothing_left = options_.smoothing_steps;
     evaluate_all();
     while(!stopped()) {
-      if(pop_and_move()) continue;
+      if(greedy_round()) continue;
       // Nothing can move with the current evaluations.
       const bool stale = moved_since_update_ > 0 || std::find(dirty_.begin(), dirty_.end(), true) != dirty_.end();
       if(smoothing_left > 0 && (!stale || options_.early_smoothing)) {
@@ -159,10 +176,8 @@ public:
     if(!stats_.budget_exhausted && !stats_.cancelled) untangle();
     update_rms_distance();
     stats_.seconds = seconds_since(start_);
-    return stats_;
   }
 
-private:
   struct Entry
   {
     double improvement;
@@ -172,6 +187,31 @@ private:
   };
 
   using Objective = Fit_objective;
+
+  // A worker's scratch space and counters.
+  struct Workspace
+  {
+    std::vector<Half_space> region;
+    Small_qp qp;
+    std::size_t qp_solves = 0, qp_fallbacks = 0, infeasible_regions = 0;
+  };
+
+  // The outcome of one vertex's work in a parallel round.
+  enum class Outcome { evaluated, moved, shortened, undone, rejected };
+  struct Work
+  {
+    std::size_t vertex;
+    bool evaluation;  // evaluate a dirty vertex, or move a clean one
+    Outcome outcome;
+    double improvement;
+    Eigen::Vector3d best;
+  };
+
+  // Moves of vertices that share no edge cannot interact: each one's faces,
+  // objective and feasible region involve its one-ring only. Each round of
+  // the greedy queue takes at most this many such vertices off its top; a
+  // constant, so that the result does not depend on the number of threads.
+  const std::size_t round_size = std::getenv("XROUND") ? std::size_t(std::atoi(std::getenv("XROUND"))) : 32;
 
   static double seconds_since(Clock::time_point t)
   {
@@ -241,8 +281,7 @@ private:
     std::vector<Point> points;
     points.reserve(vertices_.size());
     for(std::size_t i = 0; i < vertices_.size(); ++i) points.push_back(point(vertices_[i]));
-    const std::vector<std::pair<std::size_t, std::size_t> > owner =
-        feature_sample_owners(points, on_input_border_, samples_);
+    const std::vector<std::pair<std::size_t, std::size_t> > owner = (*owners_)(points, pool_);
     std::vector<std::size_t> attracted, begin(vertices_.size() + 1, 0);
     attracted.reserve(owner.size());
     for(std::size_t i = 0, j = 0; i < vertices_.size(); ++i) {
@@ -337,23 +376,26 @@ private:
   }
 
   // Solves vertex i's QP (equation 5.15, or 5.17 when smoothing) over F(v);
-  // returns false when F(v) is empty or cannot be built.
-  bool solve(std::size_t i, Goal goal, Eigen::Vector3d& best, double& improvement)
+  // returns false when F(v) is empty or cannot be built, or when no position
+  // at all improves the vertex's objective by more than the threshold (then
+  // no move is worth its QP: a cheap bound decides before F(v) is built).
+  bool solve(std::size_t i, Goal goal, Workspace& ws, Eigen::Vector3d& best, double& improvement) const
   {
     const Local_frame f = frame(i);
-    region_.clear();
-    if(!(f.scale > 0.) ||
-       !vertex_feasible_region(mesh_, points_, vertices_[i], options_.drum_subdivisions, f, region_))
-      return false;
+    if(!(f.scale > 0.)) return false;
     const Objective o = objective(i, goal);
-    o.local_form(f, qp_.G, qp_.a);
-    qp_.normals.clear();
-    qp_.offsets.clear();
-    for(const Half_space& h : region_) qp_.add_constraint(h.normal, h.offset);
-    ++stats_.qp_solves;
-    const Qp_result r = solve_small_qp_with_fallback(qp_, &stats_.qp_fallbacks);
+    o.local_form(f, ws.qp.G, ws.qp.a);
+    if(!(Objective::largest_decrease(f, ws.qp.G, ws.qp.a) > threshold_)) return false;
+    ws.region.clear();
+    if(!vertex_feasible_region(mesh_, points_, vertices_[i], options_.drum_subdivisions, f, ws.region))
+      return false;
+    ws.qp.normals.clear();
+    ws.qp.offsets.clear();
+    for(const Half_space& h : ws.region) ws.qp.add_constraint(h.normal, h.offset);
+    ++ws.qp_solves;
+    const Qp_result r = solve_small_qp_with_fallback(ws.qp, &ws.qp_fallbacks);
     if(r.status != Qp_status::optimal) {
-      ++stats_.infeasible_regions;
+      ++ws.infeasible_regions;
       return false;
     }
     best = f.to_global(r.x);
@@ -361,21 +403,58 @@ private:
     return true;
   }
 
-  void evaluate(std::size_t i)
+  bool solve(std::size_t i, Goal goal, Eigen::Vector3d& best, double& improvement)
   {
-    dirty_[i] = false;
-    double improvement = 0.;
-    Eigen::Vector3d best = position(i);
-    if(!solve(i, Goal::fit, best, improvement)) improvement = 0.;
-    target_[i] = best;
-    queue_.push({improvement, i, ++stamp_[i]});
+    const bool solved = solve(i, goal, workspaces_[0], best, improvement);
+    collect_counters();
+    return solved;
+  }
+
+  void collect_counters()
+  {
+    for(Workspace& ws : workspaces_) {
+      stats_.qp_solves += ws.qp_solves;
+      stats_.qp_fallbacks += ws.qp_fallbacks;
+      stats_.infeasible_regions += ws.infeasible_regions;
+      ws.qp_solves = ws.qp_fallbacks = ws.infeasible_regions = 0;
+    }
+  }
+
+  // Vertex i's evaluation: its optimum and the improvement H(v), 0 when its
+  // QP has no solution.
+  void evaluate(Work& w, Workspace& ws) const
+  {
+    w.best = position(w.vertex);
+    if(!solve(w.vertex, Goal::fit, ws, w.best, w.improvement)) w.improvement = 0.;
+  }
+
+  void record_evaluation(const Work& w)
+  {
+    dirty_[w.vertex] = false;
+    target_[w.vertex] = w.best;
+    queue_.push({w.improvement, w.vertex, ++stamp_[w.vertex]});
+  }
+
+  // Evaluates the listed vertices in parallel, then queues them in order.
+  void evaluate(const std::vector<std::size_t>& list)
+  {
+    work_.resize(list.size());
+    pool_.for_each(list.size(), [&](std::size_t j, int worker) {
+      work_[j].vertex = list[j];
+      work_[j].outcome = Outcome::evaluated;
+      evaluate(work_[j], workspaces_[worker]);
+    });
+    collect_counters();
+    for(const Work& w : work_) record_evaluation(w);
   }
 
   void evaluate_all()
   {
     attract_features();
     queue_ = std::priority_queue<Entry>();
-    for(std::size_t i = 0; i < vertices_.size(); ++i) evaluate(i);
+    std::vector<std::size_t> all(vertices_.size());
+    for(std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+    evaluate(all);
     moved_since_update_ = 0;
     update_rms_distance();
   }
@@ -387,32 +466,85 @@ private:
   {
     ++stats_.full_updates;
     attract_features();
+    std::vector<std::size_t> dirty;
     for(std::size_t i = 0; i < vertices_.size(); ++i)
-      if(dirty_[i]) evaluate(i);
+      if(dirty_[i]) dirty.push_back(i);
+    evaluate(dirty);
     moved_since_update_ = 0;
     update_rms_distance();
   }
 
-  // Takes the best vertex off the queue; moves it, or evaluates it if it was
-  // dirty. Returns false when no vertex improves by more than the threshold.
-  bool pop_and_move()
+  bool conflicts(std::size_t i) const
   {
-    while(!queue_.empty()) {
-      const Entry top = queue_.top();
-      queue_.pop();
-      if(top.stamp != stamp_[top.vertex]) continue;  // superseded
-      if(dirty_[top.vertex]) {                      // lazy evaluation: only when it matters
-        evaluate(top.vertex);
-        return true;
-      }
-      if(!(top.improvement > threshold_)) {
-        queue_.push(top);
-        return false;
-      }
-      move(top.vertex);
-      return true;
-    }
+    if(claimed_[i]) return true;
+    for(vertex_descriptor w : vertices_around_target(halfedge(vertices_[i], mesh_), mesh_))
+      if(claimed_[get(index_, w)]) return true;
     return false;
+  }
+
+  // One round of the greedy queue: takes the best vertices off the queue,
+  // each sharing no edge with one taken before (the others wait for the next
+  // round), up to `round_size`; evaluates those that are dirty (lazy
+  // evaluation: only when they matter) and moves the others, in parallel,
+  // then records the outcomes in the order they were taken. Returns false
+  // when no vertex improves by more than the threshold.
+  bool greedy_round()
+  {
+    std::vector<Entry> waiting;
+    std::size_t moves = 0;
+    const std::size_t moves_left = options_.max_moves - stats_.moves;
+    while(!queue_.empty() && work_round_.size() < round_size && waiting.size() < round_size) {
+      const Entry top = queue_.top();
+      if(top.stamp != stamp_[top.vertex]) {  // superseded
+        queue_.pop();
+        continue;
+      }
+      const bool evaluation = dirty_[top.vertex];
+      if(!evaluation && (!(top.improvement > threshold_) || moves == moves_left)) break;
+      queue_.pop();
+      if(conflicts(top.vertex)) {
+        waiting.push_back(top);
+        continue;
+      }
+      claimed_[top.vertex] = true;
+      work_round_.push_back({top.vertex, evaluation, Outcome::evaluated, 0., Eigen::Vector3d::Zero()});
+      if(!evaluation) ++moves;
+    }
+    for(const Entry& e : waiting) queue_.push(e);
+    if(work_round_.empty()) return false;
+    pool_.for_each(work_round_.size(), [&](std::size_t j, int worker) {
+      Work& w = work_round_[j];
+      if(w.evaluation) {
+        w.outcome = Outcome::evaluated;
+        evaluate(w, workspaces_[worker]);
+        return;
+      }
+      w.outcome = try_move(w.vertex, target_[w.vertex], true);
+      if(w.outcome == Outcome::moved || w.outcome == Outcome::shortened) evaluate(w, workspaces_[worker]);
+    });
+    collect_counters();
+    std::vector<std::size_t> neighbours;
+    for(const Work& w : work_round_) {
+      claimed_[w.vertex] = false;
+      if(w.evaluation) {
+        record_evaluation(w);
+        continue;
+      }
+      record_move(w.outcome);
+      if(w.outcome == Outcome::undone || w.outcome == Outcome::rejected) {
+        queue_.push({0., w.vertex, ++stamp_[w.vertex]});  // out of the queue until a neighbour moves
+        continue;
+      }
+      record_evaluation(w);
+      for(vertex_descriptor v : vertices_around_target(halfedge(vertices_[w.vertex], mesh_), mesh_))
+        if(!dirty_[get(index_, v)]) {
+          dirty_[get(index_, v)] = true;  // evaluated when it reaches the top, or in a full update
+          neighbours.push_back(get(index_, v));
+        }
+    }
+    work_round_.clear();
+    if(!options_.lazy_evaluation) evaluate(neighbours);
+    return true;
   }
 
   // Every face around vertex i, with i at p, is within [30, 90] exactly.
@@ -429,12 +561,12 @@ private:
   }
 
   // Moves vertex i towards `target`, halving the step until the faces around
-  // it certify exactly (at most five times); returns whether it moved. With
-  // `check_descent`, a move whose new closest triangle leaves the vertex's
-  // cost no lower than before by the threshold is undone: D changes with the
-  // closest triangle, and without this test a vertex can hop between two
-  // triangles for ever.
-  bool apply(std::size_t i, const Eigen::Vector3d& target, bool check_descent)
+  // it certify exactly (at most five times). With `check_descent`, a move
+  // whose new closest triangle leaves the vertex's cost no lower than before
+  // by the threshold is undone: D changes with the closest triangle, and
+  // without this test a vertex can hop between two triangles for ever.
+  // Writes vertex i's point and closest triangle only.
+  Outcome try_move(std::size_t i, const Eigen::Vector3d& target, bool check_descent)
   {
     const Eigen::Vector3d from = position(i);
     const Point old_point = point(vertices_[i]);
@@ -447,51 +579,85 @@ private:
       const face_descriptor old_hint = hint_[i];
       const double before = check_descent ? objective(i, Goal::fit).value(from) : 0.;
       put_point(vpm_, vertices_[i], p);
-      hint_[i] = input_.closest_near(p, old_hint);
+      hint_[i] = input_.closest(p, old_hint);
       if(check_descent && !(objective(i, Goal::fit).value(to) < before - threshold_)) {
         put_point(vpm_, vertices_[i], old_point);
         hint_[i] = old_hint;
-        ++stats_.undone_moves;
-        return false;
+        return Outcome::undone;
       }
-      if(attempt > 0) ++stats_.shortened_moves;
-      ++stats_.moves;
-      ++moved_since_update_;
-      return true;
+      return attempt > 0 ? Outcome::shortened : Outcome::moved;
     }
-    ++stats_.rejected_moves;
-    return false;
+    return Outcome::rejected;
   }
 
-  void move(std::size_t i)
+  void record_move(Outcome outcome)
   {
-    if(!apply(i, target_[i], true)) {  // out of the queue until a neighbour moves
-      queue_.push({0., i, ++stamp_[i]});
-      return;
-    }
-    evaluate(i);
-    for(vertex_descriptor w : vertices_around_target(halfedge(vertices_[i], mesh_), mesh_)) {
-      const std::size_t j = get(index_, w);
-      if(options_.lazy_evaluation)
-        dirty_[j] = true;  // evaluated when it reaches the top, or in a full update
-      else
-        evaluate(j);
+    switch(outcome) {
+    case Outcome::undone: ++stats_.undone_moves; break;
+    case Outcome::rejected: ++stats_.rejected_moves; break;
+    case Outcome::shortened: ++stats_.shortened_moves; CGAL_FALLTHROUGH;
+    case Outcome::moved: ++stats_.moves; ++moved_since_update_; break;
+    case Outcome::evaluated: break;
     }
   }
 
-  // Constrained Laplacian smoothing (thesis, 5.5): every vertex once, in
-  // order, towards its smoothing optimum (equation 5.17) within F(v).
+  bool apply(std::size_t i, const Eigen::Vector3d& target, bool check_descent)
+  {
+    const Outcome outcome = try_move(i, target, check_descent);
+    record_move(outcome);
+    return outcome == Outcome::moved || outcome == Outcome::shortened;
+  }
+
+  // Greedy colouring in index order: no edge joins two vertices of a class.
+  void colour_classes()
+  {
+    std::vector<int> colour(vertices_.size(), -1);
+    std::vector<bool> used;
+    for(std::size_t i = 0; i < vertices_.size(); ++i) {
+      used.assign(used.size(), false);
+      for(vertex_descriptor w : vertices_around_target(halfedge(vertices_[i], mesh_), mesh_)) {
+        const int c = colour[get(index_, w)];
+        if(c < 0) continue;
+        if(std::size_t(c) >= used.size()) used.resize(c + 1, false);
+        used[c] = true;
+      }
+      std::size_t c = 0;
+      while(c < used.size() && used[c]) ++c;
+      colour[i] = int(c);
+      if(c >= classes_.size()) classes_.resize(c + 1);
+      classes_[c].push_back(i);
+    }
+  }
+
+  // Constrained Laplacian smoothing (thesis, 5.5): every vertex once towards
+  // its smoothing optimum (equation 5.17) within F(v), a colour class after
+  // another, the vertices of a class (no two share an edge) in parallel.
   void smooth()
   {
     end_phase(Deform_to_fit_stage::optimization);
     stats_.stage = Deform_to_fit_stage::smoothing;
     ++stats_.smoothing_passes;
-    for(std::size_t i = 0; i < vertices_.size() && !stopped(); ++i) {
-      Eigen::Vector3d best;
-      double improvement;
-      if(!solve(i, Goal::smooth, best, improvement) || !(improvement > threshold_)) continue;
-      if(apply(i, best, false)) ++stats_.smoothing_moves;
-    }
+    for(const std::vector<std::size_t>& members : classes_)
+      // in chunks within the move budget, so that it holds exactly
+      for(std::size_t begin = 0; begin < members.size() && !stopped();) {
+        const std::size_t end = begin + (std::min)(members.size() - begin, options_.max_moves - stats_.moves);
+        work_.resize(end - begin);
+        pool_.for_each(end - begin, [&](std::size_t j, int worker) {
+          Work& w = work_[j];
+          w.vertex = members[begin + j];
+          w.outcome = Outcome::evaluated;
+          if(!solve(w.vertex, Goal::smooth, workspaces_[worker], w.best, w.improvement) ||
+             !(w.improvement > threshold_))
+            return;
+          w.outcome = try_move(w.vertex, w.best, false);
+        });
+        collect_counters();
+        for(const Work& w : work_) {
+          record_move(w.outcome);
+          if(w.outcome == Outcome::moved || w.outcome == Outcome::shortened) ++stats_.smoothing_moves;
+        }
+        begin = end;
+      }
     std::fill(dirty_.begin(), dirty_.end(), false);
     end_phase(Deform_to_fit_stage::smoothing);
     stats_.stage = Deform_to_fit_stage::optimization;
@@ -502,15 +668,21 @@ private:
   template <typename Fit>
   friend void untangle(Fit& fit);
   template <typename Fit>
+  friend std::vector<std::pair<typename Fit::face_descriptor, typename Fit::face_descriptor> > intersecting_pairs(
+      Fit& fit);
+  template <typename Fit>
   friend bool untangle_attempt(Fit& fit, const std::vector<std::size_t>& region, typename Fit::Goal goal,
                                std::vector<std::pair<typename Fit::face_descriptor, typename Fit::face_descriptor> >& pairs,
                                bool strictly);
 
   void update_rms_distance()
   {
+    std::vector<double> distances(vertices_.size());
+    pool_.for_each(vertices_.size(), [&](std::size_t i, int) {
+      distances[i] = CGAL::squared_distance(point(vertices_[i]), input_.triangle(hint_[i]));
+    });
     double sum = 0.;
-    for(std::size_t i = 0; i < vertices_.size(); ++i)
-      sum += CGAL::squared_distance(point(vertices_[i]), input_.triangle(hint_[i]));
+    for(double d : distances) sum += d;
     stats_.rms_distance = vertices_.empty() ? 0. : 100. * std::sqrt(sum / double(vertices_.size())) / diagonal_;
   }
 
@@ -533,14 +705,18 @@ private:
   std::vector<std::pair<Point, bool> > samples_;  // feature samples, see Closest_triangle
   std::vector<std::size_t> attracted_;            // sample indices, grouped by nearest vertex
   std::vector<std::size_t> attracted_begin_;      // vertex i owns attracted_[begin[i], begin[i+1])
+  std::unique_ptr<Feature_sample_owners> owners_;
   std::vector<Eigen::Vector3d> initial_;  // positions in the mesh as given
   std::vector<Eigen::Vector3d> target_;
   std::vector<std::size_t> stamp_;
   std::vector<bool> dirty_;
   std::size_t moved_since_update_ = 0;
   std::priority_queue<Entry> queue_;
-  std::vector<Half_space> region_;
-  Small_qp qp_;
+  std::vector<bool> claimed_;                      // taken in the current round
+  std::vector<std::vector<std::size_t> > classes_;  // colour classes, for the smoothing
+  Thread_pool pool_;
+  std::vector<Workspace> workspaces_;  // one per worker
+  std::vector<Work> work_, work_round_;
   Deform_to_fit_statistics stats_;
   Clock::time_point start_, phase_start_;
 };

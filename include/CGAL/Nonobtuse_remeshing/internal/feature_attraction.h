@@ -12,13 +12,19 @@
 
 #include <CGAL/Nonobtuse_remeshing/internal/epick_points.h>
 
+#include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
 #include <CGAL/property_map.h>
+#include <CGAL/tags.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <iterator>
+#include <limits>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -26,12 +32,30 @@ namespace CGAL {
 namespace Nonobtuse_remeshing {
 namespace internal {
 
-// (vertex, sample) for every sample, sorted: a sample's vertex is the nearest
-// of `points`, or, for a border sample, the nearest of those flagged in
-// `on_border` (a border sample is left out when none is flagged).
-inline std::vector<std::pair<std::size_t, std::size_t> > feature_sample_owners(
-    const std::vector<Epick::Point_3>& points, const std::vector<bool>& on_border_flags,
-    const std::vector<std::pair<Epick::Point_3, bool> >& samples)
+// Builds `tree` on the pool's workers: the same tree on any number.
+template <typename Tree, typename Pool>
+void build(Tree& tree, const Pool& pool)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(pool.workers() > 1) {
+    tree.template build<Parallel_tag>();
+    return;
+  }
+#endif
+  (void)pool;
+  tree.template build<Sequential_tag>();
+}
+
+// The owner of every feature sample as the mesh's vertices move: its
+// nearest vertex, or, for a border sample, the nearest of the vertices
+// flagged as fitting the input's border (a border sample has none when no
+// vertex is flagged). The search trees over the vertices are rebuilt only
+// when a vertex has moved farther than `reach` since they were built. Until
+// then, with m the farthest move since, a sample's nearest vertex now is
+// within its nearest distance then plus m, so it was within that distance
+// plus 2m then, and a range search of the old tree finds it: the owners are
+// exact either way.
+class Feature_sample_owners
 {
   using Point = Epick::Point_3;
   using Traits = Search_traits_3<Epick>;
@@ -40,25 +64,91 @@ inline std::vector<std::pair<std::size_t, std::size_t> > feature_sample_owners(
   using Distance = Distance_adapter<std::size_t, Point_map, Euclidean_distance<Traits> >;
   using Search = Orthogonal_k_neighbor_search<Adapter, Distance>;
   using Tree = typename Search::Tree;
-  std::vector<std::size_t> everywhere, on_border;
-  for(std::size_t i = 0; i < points.size(); ++i) {
-    everywhere.push_back(i);
-    if(on_border_flags[i]) on_border.push_back(i);
+  using Sphere = Fuzzy_sphere<Adapter>;
+
+public:
+  Feature_sample_owners(const std::vector<std::pair<Point, bool> >& samples, const std::vector<bool>& on_border,
+                        double reach)
+    : samples_(samples), on_border_(on_border), reach_(reach)
+  {}
+
+  /// (vertex, sample) for every sample with an owner, sorted, for the
+  /// vertices at `points`; the samples are searched for in parallel.
+  template <typename Pool>
+  std::vector<std::pair<std::size_t, std::size_t> > operator()(const std::vector<Point>& points, Pool& pool)
+  {
+    double move = 0.;
+    if(built_.size() == points.size())
+      for(std::size_t i = 0; i < points.size(); ++i)
+        move = (std::max)(move, CGAL::squared_distance(points[i], built_[i]));
+    move = std::sqrt(move);
+    const bool rebuild = built_.size() != points.size() || !(move <= reach_);
+    if(rebuild) build_trees(points, pool);
+    const std::size_t none = points.size();
+    std::vector<std::size_t> nearest(samples_.size(), none);
+    pool.for_each(samples_.size(), [&](std::size_t s, int) {
+      const Tree* tree = samples_[s].second ? border_.get() : all_.get();
+      if(!tree) return;
+      if(rebuild) {
+        const Search search(*tree, samples_[s].first, 1, 0., true, Distance(map_));
+        nearest[s] = search.begin()->first;
+        distance_[s] = std::sqrt(search.begin()->second);
+        return;
+      }
+      std::vector<std::size_t> candidates;
+      const double radius = distance_[s] + 2. * move;
+      tree->search(std::back_inserter(candidates), Sphere(samples_[s].first, radius * (1. + 1e-9) + 1e-300, 0.,
+                                                          Adapter(map_)));
+      double best = std::numeric_limits<double>::infinity();
+      for(std::size_t c : candidates) {
+        const double d = CGAL::squared_distance(points[c], samples_[s].first);
+        if(d < best || (d == best && c < nearest[s])) {
+          best = d;
+          nearest[s] = c;
+        }
+      }
+    });
+    std::vector<std::pair<std::size_t, std::size_t> > owner;
+    owner.reserve(samples_.size());
+    for(std::size_t s = 0; s < samples_.size(); ++s)
+      if(nearest[s] != none) owner.emplace_back(nearest[s], s);
+    std::sort(owner.begin(), owner.end());
+    return owner;
   }
-  const Point_map map = make_property_map(points);
-  const Tree all(everywhere.begin(), everywhere.end(), typename Tree::Splitter(), Adapter(map));
-  const Tree border(on_border.begin(), on_border.end(), typename Tree::Splitter(), Adapter(map));
-  std::vector<std::pair<std::size_t, std::size_t> > owner;
-  owner.reserve(samples.size());
-  for(std::size_t s = 0; s < samples.size(); ++s) {
-    const bool at_border = samples[s].second;
-    if(at_border && on_border.empty()) continue;
-    const Search search(at_border ? border : all, samples[s].first, 1, 0., true, Distance(map));
-    owner.emplace_back(search.begin()->first, s);
+
+private:
+  template <typename Pool>
+  void build_trees(const std::vector<Point>& points, Pool& pool)
+  {
+    built_ = points;
+    const std::vector<Point>& built = built_;
+    map_ = make_property_map(built);
+    std::vector<std::size_t> everywhere, on_border;
+    for(std::size_t i = 0; i < built_.size(); ++i) {
+      everywhere.push_back(i);
+      if(on_border_[i]) on_border.push_back(i);
+    }
+    all_.reset();
+    border_.reset();
+    if(!everywhere.empty()) {
+      all_ = std::make_unique<Tree>(everywhere.begin(), everywhere.end(), typename Tree::Splitter(), Adapter(map_));
+      build(*all_, pool);
+    }
+    if(!on_border.empty()) {
+      border_ = std::make_unique<Tree>(on_border.begin(), on_border.end(), typename Tree::Splitter(), Adapter(map_));
+      build(*border_, pool);
+    }
+    distance_.assign(samples_.size(), 0.);
   }
-  std::sort(owner.begin(), owner.end());
-  return owner;
-}
+
+  const std::vector<std::pair<Point, bool> >& samples_;
+  const std::vector<bool>& on_border_;
+  const double reach_;
+  std::vector<Point> built_;  // the vertices' positions when the trees were built
+  Point_map map_;
+  std::unique_ptr<Tree> all_, border_;
+  std::vector<double> distance_;  // each sample's nearest distance then
+};
 
 } // namespace internal
 } // namespace Nonobtuse_remeshing

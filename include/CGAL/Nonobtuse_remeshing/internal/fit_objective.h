@@ -15,6 +15,7 @@
 
 #include <Eigen/Dense>
 
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -56,6 +57,17 @@ struct Fit_objective
       G += 2. * t.weight * t.metric;
       a += 2. * t.weight * t.metric * (frame.origin - t.point) / frame.scale;
     }
+  }
+
+  // An upper bound on how much lower the objective can be anywhere than at
+  // the frame's origin, from its local form (G, a): s^2 a^T G^-1 a / 2 at the
+  // unconstrained minimum, which no constrained one beats; infinity when G
+  // is not positive definite.
+  static double largest_decrease(const Local_frame& frame, const Eigen::Matrix3d& G, const Eigen::Vector3d& a)
+  {
+    const Eigen::LLT<Eigen::Matrix3d> llt(G);
+    if(llt.info() != Eigen::Success) return std::numeric_limits<double>::infinity();
+    return 0.5 * frame.scale * frame.scale * a.dot(llt.solve(a));
   }
 };
 

@@ -13,9 +13,12 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <iterator>
@@ -25,6 +28,36 @@
 namespace CGAL {
 namespace Nonobtuse_remeshing {
 namespace internal {
+
+// The mesh's self-intersecting face pairs, on the fit's workers, each pair
+// and the list in the order of the face indices (the same for any number of
+// workers).
+template <typename Fit>
+std::vector<std::pair<typename Fit::face_descriptor, typename Fit::face_descriptor> > intersecting_pairs(Fit& fit)
+{
+  using face_descriptor = typename Fit::face_descriptor;
+  std::vector<std::pair<face_descriptor, face_descriptor> > pairs;
+  const auto np = CGAL::parameters::vertex_point_map(fit.points_).geom_traits(Epick());
+#ifdef CGAL_LINKED_WITH_TBB
+  if(fit.pool_.workers() > 1)
+    Polygon_mesh_processing::self_intersections<Parallel_tag>(faces(fit.mesh_), fit.mesh_, std::back_inserter(pairs),
+                                                              np);
+  else
+#endif
+    Polygon_mesh_processing::self_intersections(faces(fit.mesh_), fit.mesh_, std::back_inserter(pairs), np);
+  const auto index = get_initialized_face_index_map(fit.mesh_);
+  std::vector<std::pair<std::size_t, std::size_t> > keys;
+  std::vector<std::pair<face_descriptor, face_descriptor> > by_index;
+  for(auto& p : pairs) {
+    if(get(index, p.second) < get(index, p.first)) std::swap(p.first, p.second);
+    keys.emplace_back(get(index, p.first), get(index, p.second));
+  }
+  std::vector<std::size_t> order(pairs.size());
+  for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
+  for(std::size_t i : order) by_index.push_back(pairs[i]);
+  return by_index;
+}
 
 template <typename Fit>
 bool untangle_attempt(Fit& fit, const std::vector<std::size_t>& region, typename Fit::Goal goal,
@@ -45,9 +78,7 @@ void untangle(Fit& fit)
   using face_descriptor = typename Fit::face_descriptor;
   using vertex_descriptor = typename Fit::vertex_descriptor;
   const Clock::time_point start = Clock::now();
-  std::vector<std::pair<face_descriptor, face_descriptor> > pairs;
-  Polygon_mesh_processing::self_intersections(faces(fit.mesh_), fit.mesh_, std::back_inserter(pairs),
-                                              CGAL::parameters::vertex_point_map(fit.points_).geom_traits(Epick()));
+  std::vector<std::pair<face_descriptor, face_descriptor> > pairs = intersecting_pairs(fit);
   fit.stats_.intersecting_pairs_found = pairs.size();
   for(int round = 1; round <= 5 && !pairs.empty() && !fit.stats_.budget_exhausted && !fit.stats_.cancelled; ++round) {
     std::vector<bool> chosen(fit.vertices_.size(), false);
@@ -107,10 +138,7 @@ bool untangle_attempt(Fit& fit, const std::vector<std::size_t>& region, typename
       if(fit.stopped()) break;
       if(fit.solve(i, goal, best, improvement) && improvement > fit.threshold_ && fit.apply(i, best, false)) ++moves;
     }
-  std::vector<std::pair<face_descriptor, face_descriptor> > left;
-  Polygon_mesh_processing::self_intersections(
-      faces(fit.mesh_), fit.mesh_, std::back_inserter(left),
-      CGAL::parameters::vertex_point_map(fit.points_).geom_traits(Epick()));
+  std::vector<std::pair<face_descriptor, face_descriptor> > left = intersecting_pairs(fit);
   if(left.size() < pairs.size() || (!strictly && left.size() == pairs.size())) {
     const bool removed = left.size() < pairs.size();
     fit.stats_.untangling_moves += moves;
