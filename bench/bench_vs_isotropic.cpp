@@ -11,8 +11,8 @@
 // of our time over isotropic remeshing's. Not a test: run by hand, numbers go
 // to the README and the issue notes.
 //
-//   bench_vs_isotropic [N | --target-vertices V] [--iterations I] mesh.off...
-//   (N defaults to 100, I to 3)
+//   bench_vs_isotropic [N | --target-vertices V] [--iterations I] [--threads T] mesh.off...
+//   (N defaults to 100, I to 3, T to 1: isotropic_remeshing runs on one)
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -59,23 +59,24 @@ void row(const std::string& name, const char* method, double seconds, const Mesh
 
 int main(int argc, char** argv)
 {
-  int resolution = 100, iterations = 3;
+  int resolution = 100, iterations = 3, threads = 1;
   long target_vertices = 0;
   std::vector<std::string> paths;
   for(int i = 1; i < argc; ++i) {
     if(std::strcmp(argv[i], "--iterations") == 0 && i + 1 < argc) iterations = std::atoi(argv[++i]);
     else if(std::strcmp(argv[i], "--target-vertices") == 0 && i + 1 < argc) target_vertices = std::atol(argv[++i]);
+    else if(std::strcmp(argv[i], "--threads") == 0 && i + 1 < argc) threads = std::atoi(argv[++i]);
     else if(std::isdigit(static_cast<unsigned char>(argv[i][0]))) resolution = std::atoi(argv[i]);
     else paths.push_back(argv[i]);
   }
   if(paths.empty()) {
-    std::cerr << "usage: bench_vs_isotropic [N | --target-vertices V] [--iterations I] mesh.off...\n";
+    std::cerr << "usage: bench_vs_isotropic [N | --target-vertices V] [--iterations I] [--threads T] mesh.off...\n";
     return 2;
   }
   std::vector<double> ratios;
   if(target_vertices > 0) std::cout << "V = " << target_vertices;
   else std::cout << "N = " << resolution;
-  std::cout << ", isotropic_remeshing with " << iterations << " iterations\n"
+  std::cout << ", " << threads << " thread(s), isotropic_remeshing with " << iterations << " iterations\n"
             << "mesh                  method      seconds vertices  min-ang  max-ang    %>90     %<30  Hausdorff%\n";
   for(const std::string& path : paths) {
     const std::string name = path.substr(path.find_last_of('/') + 1);
@@ -85,9 +86,13 @@ int main(int argc, char** argv)
     Mesh ours;
     auto start = std::chrono::steady_clock::now();
     if(target_vertices > 0)
-      NR::nonobtuse_remesh(input, ours, NR::parameters::target_vertices(std::size_t(target_vertices)));
+      NR::nonobtuse_remesh(input, ours,
+                           NR::parameters::combine(NR::parameters::target_vertices(std::size_t(target_vertices)),
+                                                   NR::parameters::number_of_threads(threads)));
     else
-      NR::nonobtuse_remesh(input, ours, NR::parameters::resolution(resolution));
+      NR::nonobtuse_remesh(input, ours,
+                           NR::parameters::combine(NR::parameters::resolution(resolution),
+                                                   NR::parameters::number_of_threads(threads)));
     const double our_seconds = seconds_since(start);
     row(name, "nonobtuse", our_seconds, ours, input);
 

@@ -369,6 +369,37 @@ TEST(Cli, DecimateAndLevelsOfDetail)
   EXPECT_EQ(dj["decimation"]["vertices_after"], vertices(out).size());
 }
 
+// The fit and the levels' relaxation write the same files, byte for byte,
+// on one thread and on two; a negative number of threads is a usage error.
+TEST(Cli, OneAndTwoThreadsWriteTheSameFiles)
+{
+  const std::string folder = scratch();
+  std::vector<std::string> full, level, decimated;
+  for(int threads = 1; threads <= 2; ++threads) {
+    const std::string name = folder + "/pig" + std::to_string(threads);
+    const Outcome r = run("remesh " + data("pig.off") + " -o " + name + ".off --resolution 40 --lod 0.3 -q --threads " +
+                          std::to_string(threads));
+    ASSERT_EQ(r.code, 0) << r.err;
+    full.push_back(slurp(name + ".off"));
+    level.push_back(slurp(name + "_lod1.off"));
+    const Outcome d = run("decimate " + name + ".off -o " + name + "_decimated.off --ratio 0.5 -q --threads " +
+                          std::to_string(threads));
+    ASSERT_EQ(d.code, 0) << d.err;
+    decimated.push_back(slurp(name + "_decimated.off"));
+    Mesh mesh;
+    NR::read_triangle_mesh(name + "_decimated.off", mesh);
+    EXPECT_TRUE(NR::certify_angle_bounds(mesh).is_certified());
+  }
+  ASSERT_FALSE(full[0].empty());
+  ASSERT_FALSE(level[0].empty());
+  EXPECT_TRUE(full[0] == full[1]);
+  EXPECT_TRUE(level[0] == level[1]);
+  EXPECT_TRUE(decimated[0] == decimated[1]);
+  const Outcome bad = run("remesh " + data("sphere.off") + " -o " + folder + "/bad.off --threads -1");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_FALSE(exists(folder + "/bad.off"));
+}
+
 // An uncertified input exits 1 with one line; bad requests exit 2; nothing
 // is written.
 TEST(Cli, DecimateRefusesWithoutWriting)

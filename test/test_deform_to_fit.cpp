@@ -10,6 +10,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/nonobtuse_remeshing.h>
 #include <CGAL/Nonobtuse_remeshing/deform_to_fit.h>
+#include <CGAL/Nonobtuse_remeshing/internal/feature_attraction.h>
+#include <CGAL/Nonobtuse_remeshing/internal/parallel.h>
 
 #include <gtest/gtest.h>
 
@@ -18,6 +20,7 @@
 #include <cstdio>
 #include <functional>
 #include <iostream>
+#include <random>
 #include <string>
 #include <unistd.h>
 
@@ -107,7 +110,7 @@ TEST(DeformToFit, CertifiedAtEveryMoment)
   Mesh mesh = initial_mesh(input, 30);
   Certifying_visitor visitor;
   visitor.mesh = &mesh;
-  visitor.period = 97;
+  visitor.period = 5;  // rounds of at most 32 moves
   const auto s = NR::deform_to_fit(mesh, input, NR::parameters::fit_visitor(std::ref(visitor)));
   EXPECT_GT(visitor.checks, 50u);
   EXPECT_EQ(visitor.failures, 0u);
@@ -138,11 +141,12 @@ TEST(DeformToFit, BudgetAndCancellationLeaveACertifiedMesh)
     Mesh mesh = initial;
     Certifying_visitor visitor;
     visitor.mesh = &mesh;
-    visitor.cancel_after = 500;
+    visitor.cancel_after = 20;
     const auto s = NR::deform_to_fit(mesh, input, NR::parameters::fit_visitor(std::ref(visitor)));
     EXPECT_TRUE(s.cancelled);
     EXPECT_FALSE(s.budget_exhausted);
-    EXPECT_LT(s.moves, 500u);
+    EXPECT_EQ(visitor.calls, 20u);  // not called again
+    EXPECT_LE(s.moves, 20u * 32u);  // a round moves at most 32 vertices
     EXPECT_EQ(visitor.failures, 0u);
     EXPECT_TRUE(NR::certify_angle_bounds(mesh).is_certified());
   }
@@ -151,7 +155,7 @@ TEST(DeformToFit, BudgetAndCancellationLeaveACertifiedMesh)
     Mesh mesh = initial;
     Certifying_visitor visitor;
     visitor.mesh = &mesh;
-    visitor.cancel_after = 300;
+    visitor.cancel_after = 10;
     const auto s = NR::deform_to_fit(mesh, input, NR::parameters::fit_visitor(visitor));
     EXPECT_TRUE(s.cancelled);
     EXPECT_EQ(visitor.calls, 0u);  // the copy was called, not the original
@@ -211,9 +215,68 @@ TEST(DeformToFit, RefusesBadRequestsAndLeavesTheMeshAlone)
   EXPECT_THROW(NR::deform_to_fit(mesh, input, NR::parameters::quadric_rings(5)), NR::Bad_parameter);
   EXPECT_THROW(NR::deform_to_fit(mesh, input, NR::parameters::fit_tolerance(0.)), NR::Bad_parameter);
   EXPECT_THROW(NR::deform_to_fit(mesh, input, NR::parameters::smoothing_steps(-1)), NR::Bad_parameter);
+  EXPECT_THROW(NR::deform_to_fit(mesh, input, NR::parameters::number_of_threads(-1)), NR::Bad_parameter);
   Mesh uncertified = nonobtuse_test::load("pig.off");  // angles from 2 to 176 degrees
   EXPECT_THROW(NR::deform_to_fit(uncertified, input), NR::Bad_input);
   EXPECT_THROW(NR::deform_to_fit(mesh, Mesh()), NR::Bad_input);
   EXPECT_EQ(num_vertices(mesh), num_vertices(initial));
   for(auto v : vertices(mesh)) ASSERT_EQ(mesh.point(v), initial.point(v));
+}
+
+// Rounds of vertices that share no edge, and smoothing by colour classes,
+// give the same points and the same statistics on any number of threads.
+TEST(DeformToFit, SamePointsOnAnyNumberOfThreads)
+{
+  const Mesh input = nonobtuse_test::load("elephant.off");
+  const Mesh initial = initial_mesh(input, 30);
+  std::vector<Mesh> fitted;
+  std::vector<NR::Deform_to_fit_statistics> stats;
+  for(int threads : {1, 2, 3}) {
+    fitted.push_back(initial);
+    stats.push_back(NR::deform_to_fit(fitted.back(), input, NR::parameters::number_of_threads(threads)));
+  }
+  ASSERT_GT(stats[0].moves, num_vertices(initial));
+  for(std::size_t k = 1; k < fitted.size(); ++k) {
+    EXPECT_EQ(stats[k].moves, stats[0].moves);
+    EXPECT_EQ(stats[k].qp_solves, stats[0].qp_solves);
+    EXPECT_EQ(stats[k].smoothing_moves, stats[0].smoothing_moves);
+    for(auto v : vertices(initial)) ASSERT_EQ(fitted[k].point(v), fitted[0].point(v));
+  }
+}
+
+// The owners of the feature samples, found with search trees that are
+// rebuilt only when a vertex has moved farther than the reach, are the
+// nearest vertices (the nearest flagged ones for border samples), as a
+// search over all vertices finds them.
+TEST(DeformToFit, FeatureOwnersStayExactAsVerticesMove)
+{
+  using Point = CGAL::Epick::Point_3;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0., 1.), step(-0.004, 0.004);
+  std::vector<Point> points;
+  std::vector<bool> flagged;
+  for(int i = 0; i < 2000; ++i) {
+    points.emplace_back(unit(random), unit(random), unit(random));
+    flagged.push_back(unit(random) < 0.2);
+  }
+  std::vector<std::pair<Point, bool> > samples;
+  for(int s = 0; s < 300; ++s) samples.emplace_back(Point(unit(random), unit(random), unit(random)), s % 3 == 0);
+  NR::internal::Feature_sample_owners owners(samples, flagged, 0.02);
+  for(int pass = 0; pass < 12; ++pass) {
+    NR::internal::Thread_pool pool(1 + pass % 2);
+    const auto found = owners(points, pool);
+    ASSERT_EQ(found.size(), samples.size());
+    for(const auto& o : found) {
+      const Point& q = samples[o.second].first;
+      std::size_t nearest = points.size();
+      for(std::size_t i = 0; i < points.size(); ++i)
+        if((!samples[o.second].second || flagged[i]) &&
+           (nearest == points.size() || CGAL::squared_distance(q, points[i]) < CGAL::squared_distance(q, points[nearest])))
+          nearest = i;
+      ASSERT_EQ(CGAL::squared_distance(q, points[o.first]), CGAL::squared_distance(q, points[nearest]))
+          << "pass " << pass << ", sample " << o.second;
+      if(samples[o.second].second) ASSERT_TRUE(flagged[o.first]);
+    }
+    for(Point& p : points) p = Point(p.x() + step(random), p.y() + step(random), p.z() + step(random));
+  }
 }

@@ -25,9 +25,10 @@ public:
   /// @{
 
   /*!
-  Called by `deform_to_fit()` before it considers each vertex move, in the optimization, in the
-  constrained Laplacian smoothing passes and in the untangling at the end, unless the budget of
-  `max_moves` or `max_seconds` is exhausted. `statistics` are those of the fit so far;
+  Called by `deform_to_fit()` before each round of moves (at most 32 vertices that share no edge,
+  moved at the same time; a colour class, or a part of one, in the smoothing passes) and before
+  each move of the untangling at the end, unless the budget of `max_moves` or `max_seconds` is
+  exhausted. `statistics` are those of the fit so far;
   `statistics.stage` says whether it is optimizing or smoothing.
 
   Returning `false` stops the fit: the moves made so far stay, the mesh is certified, no

@@ -87,6 +87,9 @@ struct Decimation_level
 ///   \cgalParamNBegin{relaxation} rounds with deform-to-fit between them; false: the thesis's
 ///     single greedy run; default true
 ///     \cgalParamType{`bool`} \cgalParamNEnd
+///   \cgalParamNBegin{number_of_threads} threads of the relaxation, see `deform_to_fit()`;
+///     default 0 (one per core)
+///     \cgalParamType{`int`} \cgalParamNEnd
 ///   \cgalParamNBegin{decimation_visitor} progress and cancellation, see `Default_decimation_visitor`
 ///     (pass `std::ref(visitor)` to keep its state)
 ///     \cgalParamType{a model of `DecimationVisitor`} \cgalParamNEnd

@@ -65,6 +65,10 @@ namespace Nonobtuse_remeshing {
 ///     \cgalParamType{`bool`} \cgalParamNEnd
 ///   \cgalParamNBegin{attract_features} the input's vertices and points along its sharp and border edges attract their nearest mesh vertex (beyond the thesis); default true
 ///     \cgalParamType{`bool`} \cgalParamNEnd
+///   \cgalParamNBegin{number_of_threads} threads that move vertices sharing no edge at the same
+///     time (oneTBB; without it, one); 0 for one per core; the result is the same, bit for bit,
+///     for any number; default 0
+///     \cgalParamType{`int`} \cgalParamNEnd
 ///   \cgalParamNBegin{fit_visitor} progress and cancellation, see `Default_deform_to_fit_visitor`
 ///     (pass `std::ref(visitor)` to keep its state)
 ///     \cgalParamType{a model of `DeformToFitVisitor`} \cgalParamNEnd

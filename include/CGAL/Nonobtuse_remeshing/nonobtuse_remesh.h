@@ -54,7 +54,7 @@ namespace Nonobtuse_remeshing {
 ///     \cgalParamType{`Remeshing_stage`} \cgalParamNEnd
 ///   \cgalParamNBegin{alpha, drum_subdivisions, quadric_rings, smoothing_steps, fit_tolerance,
 ///     max_moves, max_seconds, lazy_evaluation, early_smoothing, tangential_smoothing,
-///     attract_features} see `deform_to_fit()` (the drum subdivisions serve the valence stage
+///     attract_features, number_of_threads} see `deform_to_fit()` (the drum subdivisions serve the valence stage
 ///     too) \cgalParamNEnd
 ///   \cgalParamNBegin{remeshing_visitor} progress and cancellation, see `Default_remeshing_visitor`
 ///     (pass `std::ref(visitor)` to keep its state); it sees the fit's progress, so a `fit_visitor`

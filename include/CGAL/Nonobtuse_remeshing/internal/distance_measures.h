@@ -2,7 +2,8 @@
 //
 // The measures of the quality report (quality_report.h): Hausdorff
 // distances (CGAL's bounded-error one, both ways), area-weighted mean
-// distances, the bounding-box diagonal, and a counter of self-intersections.
+// distances (the four at the same time with oneTBB), the bounding-box
+// diagonal, and a counter of self-intersections.
 
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_DISTANCE_MEASURES_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_DISTANCE_MEASURES_H
@@ -20,6 +21,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_invoke.h>
+#endif
 
 namespace CGAL {
 namespace Nonobtuse_remeshing {
@@ -76,19 +81,33 @@ Report distance_report(const TriangleMesh& mesh, const TriangleMesh& reference, 
     throw Bad_input("the reference mesh has a zero-size bounding box");
   const double scale = r.reference_diagonal > 0. ? 100. / r.reference_diagonal : 0.;
   const double error = relative_error * r.reference_diagonal;
-  r.hausdorff_to_reference =
-      scale * PMP::bounded_error_Hausdorff_distance<Sequential_tag>(mesh, reference, error);
-  r.hausdorff_from_reference =
-      scale * PMP::bounded_error_Hausdorff_distance<Sequential_tag>(reference, mesh, error);
+  // four measures, each sequential, side by side on the cores there are
+  const auto hausdorff_to = [&] {
+    r.hausdorff_to_reference = scale * PMP::bounded_error_Hausdorff_distance<Sequential_tag>(mesh, reference, error);
+  };
+  const auto hausdorff_from = [&] {
+    r.hausdorff_from_reference = scale * PMP::bounded_error_Hausdorff_distance<Sequential_tag>(reference, mesh, error);
+  };
+  const auto mean_to = [&] {
+    AABB_tree<Traits> to_reference(faces(reference).first, faces(reference).second, reference);
+    to_reference.accelerate_distance_queries();
+    r.mean_to_reference = scale * mean_distance(mesh, to_reference);
+  };
+  const auto mean_from = [&] {
+    AABB_tree<Traits> to_mesh(faces(mesh).first, faces(mesh).second, mesh);
+    to_mesh.accelerate_distance_queries();
+    r.mean_from_reference = scale * mean_distance(reference, to_mesh);
+  };
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::parallel_invoke(hausdorff_to, hausdorff_from, mean_to, mean_from);
+#else
+  hausdorff_to();
+  hausdorff_from();
+  mean_to();
+  mean_from();
+#endif
   r.hausdorff_symmetric = (std::max)(r.hausdorff_to_reference, r.hausdorff_from_reference);
   r.hausdorff_error_bound = scale * error;
-
-  AABB_tree<Traits> to_reference(faces(reference).first, faces(reference).second, reference);
-  to_reference.accelerate_distance_queries();
-  r.mean_to_reference = scale * mean_distance(mesh, to_reference);
-  AABB_tree<Traits> to_mesh(faces(mesh).first, faces(mesh).second, mesh);
-  to_mesh.accelerate_distance_queries();
-  r.mean_from_reference = scale * mean_distance(reference, to_mesh);
   return r;
 }
 

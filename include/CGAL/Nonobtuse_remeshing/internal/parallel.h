@@ -9,6 +9,7 @@
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_PARALLEL_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_PARALLEL_H
 
+#include <algorithm>
 #include <cstddef>
 #include <memory>
 
@@ -25,11 +26,13 @@ namespace internal {
 class Thread_pool
 {
 public:
-  /// `threads` workers, 0 for one per core; one without oneTBB.
+  /// `threads` workers, at most one per core (more would only wait), 0 for
+  /// one per core; one without oneTBB.
   explicit Thread_pool(int threads)
   {
 #ifdef CGAL_LINKED_WITH_TBB
-    workers_ = threads > 0 ? threads : tbb::this_task_arena::max_concurrency();
+    const int cores = tbb::this_task_arena::max_concurrency();
+    workers_ = threads > 0 ? (std::min)(threads, cores) : cores;
     if(workers_ > 1) arena_ = std::make_unique<tbb::task_arena>(workers_);
 #else
     (void)threads;
