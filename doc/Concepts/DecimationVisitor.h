@@ -23,7 +23,7 @@ public:
   /*!
   Called before each edge collapse, while a target vertex count is left and the cheapest
   collapse is within the cost ceiling of the round, and, with the named parameter `relaxation`
-  (the default), before each vertex move that the deform-to-fit runs between rounds consider.
+  (the default), before each round of vertex moves of the deform-to-fit runs between rounds.
   `statistics` are those of the decimation, also during these fits.
 
   Returning `false` stops the decimation with `stop_reason` equal to

@@ -38,8 +38,8 @@ public:
 
   /*!
   Called before each stage starts, with `progress.stage` that stage, `progress.fraction` 0 and
-  `progress.fit` null; and during the fit, as a `DeformToFitVisitor` is, before each vertex move
-  it considers, with `progress.stage` `Remeshing_stage::fit`, `progress.fraction` -1 and
+  `progress.fit` null; and during the fit, as a `DeformToFitVisitor` is, before each round of
+  vertex moves, with `progress.stage` `Remeshing_stage::fit`, `progress.fraction` -1 and
   `progress.fit` pointing to the fit's statistics so far.
 
   Returning `false` stops the pipeline there: the stages not yet started do not run, the returned
