@@ -211,7 +211,7 @@ private:
   // objective and feasible region involve its one-ring only. Each round of
   // the greedy queue takes at most this many such vertices off its top; a
   // constant, so that the result does not depend on the number of threads.
-  const std::size_t round_size = std::getenv("XROUND") ? std::size_t(std::atoi(std::getenv("XROUND"))) : 32;
+  static constexpr std::size_t round_size = 32;
 
   static double seconds_since(Clock::time_point t)
   {
@@ -441,7 +441,6 @@ private:
     work_.resize(list.size());
     pool_.for_each(list.size(), [&](std::size_t j, int worker) {
       work_[j].vertex = list[j];
-      work_[j].outcome = Outcome::evaluated;
       evaluate(work_[j], workspaces_[worker]);
     });
     collect_counters();
@@ -539,7 +538,7 @@ private:
       for(vertex_descriptor v : vertices_around_target(halfedge(vertices_[w.vertex], mesh_), mesh_))
         if(!dirty_[get(index_, v)]) {
           dirty_[get(index_, v)] = true;  // evaluated when it reaches the top, or in a full update
-          neighbours.push_back(get(index_, v));
+          if(!options_.lazy_evaluation) neighbours.push_back(get(index_, v));
         }
     }
     work_round_.clear();
