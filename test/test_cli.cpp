@@ -233,6 +233,37 @@ TEST(Cli, RemeshWritesACertifiedMesh)
   EXPECT_EQ(std::system(("test $(ls -A '" + folder + "' | wc -l) -eq 2").c_str()), 0);
 }
 
+// A closed input that crosses itself (cow.off) comes out closed, and the
+// report says which cubes the winding number signed; --signs patches, the
+// thesis alone, opens holes where it crosses itself.
+TEST(Cli, SelfIntersectingInputComesOutClosed)
+{
+  const std::string folder = scratch();
+  for(const std::string signs : {"auto", "patches"}) {
+    const std::string out = folder + "/cow-" + signs + ".off", json = folder + "/cow-" + signs + ".json";
+    const Outcome r = run("remesh " + data("cow.off") + " -o " + out + " -N 100 --stop-after init -q --signs " + signs +
+                          " --report " + json);
+    ASSERT_EQ(r.code, 0) << r.err;
+    Mesh mesh;
+    NR::read_triangle_mesh(out, mesh);
+    EXPECT_TRUE(NR::certify_angle_bounds(mesh, NR::parameters::min_angle(35.26)).is_certified());
+    const NR::Quality_report q = NR::quality_report(mesh, nullptr, NR::parameters::maximum_self_intersections(std::size_t(1)));
+    const auto j = nlohmann::json::parse(slurp(json));
+    EXPECT_EQ(j["init"]["borders_out"], q.border_cycles);
+    if(signs == "auto") {
+      EXPECT_EQ(q.border_cycles, 0u);
+      EXPECT_EQ(j["init"]["self_intersecting_input"], true);
+      EXPECT_GT(j["init"]["cubes_signed_by_winding_number"].get<std::size_t>(), 0u);
+    } else {
+      EXPECT_GT(q.border_cycles, 0u);
+      EXPECT_EQ(j["init"]["cubes_signed_by_winding_number"], 0);
+    }
+    EXPECT_EQ(j["init"]["cubes_signed_by_winding_number"].get<std::size_t>() +
+                  j["init"]["cubes_signed_by_patches"].get<std::size_t>(),
+              j["init"]["cubes_intersected"].get<std::size_t>());
+  }
+}
+
 // The default pipeline runs init and fit; the fit's statistics are printed
 // and in the JSON, the written file certifies, and the fit is closer.
 TEST(Cli, RemeshFitsByDefault)

@@ -6,6 +6,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/nonobtuse_remeshing.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -21,6 +22,7 @@
 #include <numeric>
 #include <set>
 #include <string>
+#include <tuple>
 #include <unistd.h>
 
 namespace NR = CGAL::Nonobtuse_remeshing;
@@ -33,6 +35,7 @@ namespace {
 
 using nonobtuse_test::data;
 using nonobtuse_test::load;
+using nonobtuse_test::written_and_reread;
 
 // The grid nonobtuse_marching_cubes() builds for `mesh`.
 NR::internal::Grid grid_of(const Mesh& mesh, int resolution)
@@ -366,7 +369,8 @@ TEST(MarchingCubes, SeveralComponentsAreKept)
     for(auto v : copy.vertices_around_face(copy.halfedge(f))) corners.push_back(to_new[v]);
     two.add_face(corners);
   }
-  for(auto source : {NR::Sign_source::patches, NR::Sign_source::inside_test}) {
+  for(auto source : {NR::Sign_source::automatic, NR::Sign_source::patches, NR::Sign_source::winding_number,
+                      NR::Sign_source::inside_test}) {
     Mesh out;
     const auto r = NR::nonobtuse_marching_cubes(
         two, out, NR::parameters::combine(NR::parameters::resolution(60), NR::parameters::sign_source(source)));
@@ -378,7 +382,7 @@ TEST(MarchingCubes, SeveralComponentsAreKept)
   }
 }
 
-TEST(MarchingCubes, InsideTestAndPatchesAgreeOnClosedInputs)
+TEST(MarchingCubes, AllSignSourcesAgreeOnClosedInputs)
 {
   // rotor.off is left out: its blades are thinner than a cube, so a global
   // inside test cannot keep its topology (the patches keep it, as double
@@ -386,7 +390,7 @@ TEST(MarchingCubes, InsideTestAndPatchesAgreeOnClosedInputs)
   for(const std::string name : {"sphere.off", "elephant.off", "cube-meshed.off"}) {
     const Mesh input = load(name);
     const long euler = NR::quality_report(input).euler_characteristic;
-    for(auto source : {NR::Sign_source::patches, NR::Sign_source::inside_test}) {
+    for(auto source : {NR::Sign_source::patches, NR::Sign_source::winding_number, NR::Sign_source::inside_test}) {
       Mesh out;
       NR::nonobtuse_marching_cubes(input, out, NR::parameters::combine(NR::parameters::resolution(70),
                                                                        NR::parameters::sign_source(source)));
@@ -408,7 +412,7 @@ TEST(MarchingCubes, OrientedLikeTheInput)
   for(bool flipped : {false, true}) {
     if(flipped) CGAL::Polygon_mesh_processing::reverse_face_orientations(input);
     const double input_volume = CGAL::Polygon_mesh_processing::volume(input);
-    for(auto source : {NR::Sign_source::patches, NR::Sign_source::inside_test}) {
+    for(auto source : {NR::Sign_source::patches, NR::Sign_source::winding_number, NR::Sign_source::inside_test}) {
       Mesh out;
       NR::nonobtuse_marching_cubes(input, out, NR::parameters::combine(NR::parameters::resolution(50),
                                                                        NR::parameters::sign_source(source)));
@@ -461,5 +465,238 @@ TEST(MarchingCubes, ClosedPiecesAreNeverRemoved)
     EXPECT_GT(box.xmax(), 29.) << resolution;
     EXPECT_EQ(r.borders_out, 0u) << resolution;
     EXPECT_EQ(r.islands_removed, 0u) << resolution;
+  }
+}
+
+namespace {
+
+// `mesh` and a copy moved by `offset`, as one mesh of two components.
+Mesh with_moved_copy(const Mesh& mesh, const Kernel::Vector_3& offset)
+{
+  Mesh two = mesh;
+  std::map<Mesh::Vertex_index, Mesh::Vertex_index> to_new;
+  for(auto v : mesh.vertices()) to_new[v] = two.add_vertex(mesh.point(v) + offset);
+  for(auto f : mesh.faces()) {
+    std::vector<Mesh::Vertex_index> corners;
+    for(auto v : mesh.vertices_around_face(mesh.halfedge(f))) corners.push_back(to_new[v]);
+    two.add_face(corners);
+  }
+  return two;
+}
+
+// A closed unit sphere of revolution whose profile curls through itself at
+// the equator: a fold of the surface pushed through the surface beside it.
+// What it encloses is the ball with a small bulge, a sphere topologically.
+Mesh curled_sphere()
+{
+  const double pi = 3.14159265358979323846, r = 0.22, alpha = 0.4;
+  const int n = 48, loop = 40, segments = 64;
+  std::vector<std::array<double, 2> > profile;
+  for(int i = 1; i <= n; ++i) profile.push_back({std::cos(-pi / 2 + pi / 2 * i / n), std::sin(-pi / 2 + pi / 2 * i / n)});
+  const std::array<double, 2> centre{1 - r * std::cos(alpha), r * std::sin(alpha)};
+  const double start = std::atan2(-centre[1], 1 - centre[0]);
+  for(int i = 1; i < loop; ++i)
+    profile.push_back({centre[0] + r * std::cos(start + 2 * pi * i / loop), centre[1] + r * std::sin(start + 2 * pi * i / loop)});
+  for(int i = 0; i < n; ++i) profile.push_back({std::cos(pi / 2 * i / n), std::sin(pi / 2 * i / n)});
+  Mesh mesh;
+  const auto south = mesh.add_vertex(Point(0, 0, -1));
+  std::vector<std::vector<Mesh::Vertex_index> > rings;
+  for(const auto& p : profile) {
+    rings.emplace_back();
+    for(int k = 0; k < segments; ++k)
+      rings.back().push_back(mesh.add_vertex(
+          Point(p[0] * std::cos(2 * pi * k / segments), p[0] * std::sin(2 * pi * k / segments), p[1])));
+  }
+  const auto north = mesh.add_vertex(Point(0, 0, 1));
+  for(int k = 0; k < segments; ++k) {
+    const int l = (k + 1) % segments;
+    mesh.add_face(south, rings.front()[l], rings.front()[k]);
+    for(std::size_t i = 0; i + 1 < rings.size(); ++i) {
+      mesh.add_face(rings[i][k], rings[i][l], rings[i + 1][l]);
+      mesh.add_face(rings[i][k], rings[i + 1][l], rings[i + 1][k]);
+    }
+    mesh.add_face(north, rings.back()[k], rings.back()[l]);
+  }
+  if(CGAL::Polygon_mesh_processing::volume(mesh) < 0) CGAL::Polygon_mesh_processing::reverse_face_orientations(mesh);
+  return mesh;
+}
+
+} // namespace
+
+// The tree's far-field sums against the exact sum over all triangles, at
+// grid corners in and around a closed, a self-intersecting and an open mesh.
+TEST(WindingNumber, TreeIsCloseToTheExactSum)
+{
+  for(const std::string name : {"sphere.off", "cow.off", "pig.off"}) {
+    const Mesh mesh = load(name);
+    const auto input = NR::internal::input_triangles(mesh, get(CGAL::vertex_point, mesh));
+    const NR::internal::Winding_number w(input.triangles, std::vector<bool>(input.triangles.size(), true));
+    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
+    double worst = 0.;
+    std::size_t integral = 0;
+    for(int i = 0; i <= 16; ++i)
+      for(int j = 0; j <= 16; ++j)
+        for(int k = 0; k <= 16; ++k) {
+          std::array<double, 3> q;
+          for(int a = 0; a < 3; ++a) {
+            const int t = a == 0 ? i : a == 1 ? j : k;
+            q[a] = box.min(a) - 0.1 * (box.max(a) - box.min(a)) + 1.2 * (box.max(a) - box.min(a)) * (t + 0.31) / 16.;
+          }
+          const double exact = w.brute_force(q), fast = w(q);
+          worst = (std::max)(worst, std::abs(exact - fast));
+          if(std::abs(exact - std::round(exact)) < 0.2) {
+            ++integral;
+            EXPECT_EQ(std::lround(exact), std::lround(fast)) << name;
+          }
+        }
+    EXPECT_LT(worst, 0.05) << name;
+    EXPECT_GT(integral, 4000u) << name;
+  }
+  const Mesh sphere = load("sphere.off");
+  const auto input = NR::internal::input_triangles(sphere, get(CGAL::vertex_point, sphere));
+  const NR::internal::Winding_number w(input.triangles, std::vector<bool>(input.triangles.size(), true));
+  EXPECT_NEAR(w({0.01, 0.02, 0.03}), 1., 0.01);
+  EXPECT_NEAR(w({3., 2., 1.}), 0., 0.01);
+}
+
+// Parts that overlap come out as the closed surface of their union; the
+// initial mesh keeps its [35.26, 90] bound, checked on the written file.
+TEST(MarchingCubes, OverlappingPartsComeOutAsTheirUnion)
+{
+  const Mesh sphere = load("sphere.off");
+  const double diameter = CGAL::Polygon_mesh_processing::bbox(sphere).xmax() -
+                          CGAL::Polygon_mesh_processing::bbox(sphere).xmin();
+  const std::vector<std::pair<std::string, Mesh> > inputs{
+      {"two overlapping spheres", with_moved_copy(sphere, Kernel::Vector_3(0.35, 0.1, 0.05) * diameter)},
+      {"curled sphere", curled_sphere()}};
+  for(const auto& input : inputs)
+    for(int resolution : {50, 100, 200}) {
+      Mesh out;
+      const auto r = NR::nonobtuse_marching_cubes(input.second, out, NR::parameters::resolution(resolution));
+      EXPECT_TRUE(r.self_intersecting_input) << input.first;
+      EXPECT_GT(r.cubes_signed_by_winding_number, 0u) << input.first;
+      EXPECT_EQ(r.cubes_signed_by_winding_number + r.cubes_signed_by_patches, r.cubes_intersected);
+      const Mesh back = written_and_reread(out, "union.off");
+      EXPECT_TRUE(NR::certify_angle_bounds(back, NR::parameters::min_angle(35.26)).is_certified()) << input.first;
+      const NR::Quality_report q = NR::quality_report(back, nullptr, one_self_intersection());
+      EXPECT_EQ(q.border_cycles, 0u) << input.first << " at " << resolution;
+      EXPECT_EQ(q.connected_components, 1u) << input.first << " at " << resolution;
+      EXPECT_EQ(q.euler_characteristic, 2) << input.first << " at " << resolution;
+    }
+  const Mesh elephant = load("elephant.off");
+  const Mesh two = with_moved_copy(elephant, Kernel::Vector_3(0.1, 0.03, 0.02));
+  for(int resolution : {50, 100}) {
+    Mesh out;
+    NR::nonobtuse_marching_cubes(two, out, NR::parameters::resolution(resolution));
+    const NR::Quality_report q = NR::quality_report(written_and_reread(out, "elephants.off"), nullptr, one_self_intersection());
+    EXPECT_TRUE(q.certified);
+    EXPECT_EQ(q.border_cycles, 0u) << resolution;
+  }
+}
+
+// cow.off is closed and crosses itself (101 face pairs): the patches alone
+// open holes where it does, the automatic signs keep it closed (a horn tip
+// or the tail tip, thinner than a cube, may still leave the octahedron
+// around one grid corner apart, with any sign source). pig.off is open (7
+// borders) and crosses itself (3 pairs): its own borders, no more.
+TEST(MarchingCubes, SelfIntersectingShippedMeshesKeepTheirBorders)
+{
+  const Mesh cow = load("cow.off");
+  for(int resolution : {100, 200}) {
+    Mesh out, thesis;
+    const auto r = NR::nonobtuse_marching_cubes(cow, out, NR::parameters::resolution(resolution));
+    EXPECT_TRUE(r.self_intersecting_input);
+    const NR::Quality_report q = NR::quality_report(written_and_reread(out, "cow.off"), nullptr, one_self_intersection());
+    EXPECT_TRUE(q.certified);
+    EXPECT_EQ(q.border_cycles, 0u) << resolution;
+    EXPECT_LE(q.connected_components, 2u) << resolution;
+    const auto patches = NR::nonobtuse_marching_cubes(
+        cow, thesis, NR::parameters::combine(NR::parameters::resolution(resolution),
+                                             NR::parameters::sign_source(NR::Sign_source::patches)));
+    EXPECT_GT(patches.borders_out, 0u) << resolution;
+  }
+  Mesh out;
+  NR::nonobtuse_marching_cubes(load("pig.off"), out, NR::parameters::resolution(100));
+  EXPECT_EQ(NR::quality_report(written_and_reread(out, "pig.off"), nullptr, one_self_intersection()).border_cycles, 7u);
+}
+
+// Without self-intersections and gaps the automatic signs are the thesis's
+// patches: the same mesh, and no winding number is computed (open inputs
+// too: their border cycles are larger than a cube).
+TEST(MarchingCubes, AutomaticSignsArePatchesWithoutSelfIntersectionsOrGaps)
+{
+  for(const std::string name : {"elephant.off", "mesh_with_border.off", "nefertiti.off"}) {
+    const Mesh input = load(name);
+    Mesh automatic, patches;
+    const auto r = NR::nonobtuse_marching_cubes(input, automatic, NR::parameters::resolution(60));
+    NR::nonobtuse_marching_cubes(input, patches, NR::parameters::combine(NR::parameters::resolution(60),
+                                                                         NR::parameters::sign_source(NR::Sign_source::patches)));
+    EXPECT_FALSE(r.self_intersecting_input) << name;
+    EXPECT_EQ(r.cubes_signed_by_winding_number, 0u) << name;
+    EXPECT_EQ(r.cubes_signed_by_patches, r.cubes_intersected) << name;
+    ASSERT_EQ(automatic.number_of_vertices(), patches.number_of_vertices()) << name;
+    ASSERT_EQ(automatic.number_of_faces(), patches.number_of_faces()) << name;
+    for(auto v : automatic.vertices()) EXPECT_EQ(automatic.point(v), patches.point(v)) << name;
+    for(auto f : automatic.faces()) {
+      std::vector<Mesh::Vertex_index> a, b;
+      for(auto v : automatic.vertices_around_face(automatic.halfedge(f))) a.push_back(v);
+      for(auto v : patches.vertices_around_face(patches.halfedge(f))) b.push_back(v);
+      EXPECT_EQ(a, b) << name;
+    }
+  }
+}
+
+// A gap (a border cycle smaller than a cube) is closed by the automatic
+// signs; at a resolution where it is larger than a cube, it is a border.
+TEST(MarchingCubes, AutomaticSignsCloseGapsSmallerThanACube)
+{
+  Mesh holed = load("elephant.off");
+  const auto f = *holed.faces().begin();
+  CGAL::Bbox_3 hole;
+  for(auto v : holed.vertices_around_face(holed.halfedge(f))) hole += holed.point(v).bbox();
+  const double diagonal = std::sqrt(CGAL::square(hole.xmax() - hole.xmin()) + CGAL::square(hole.ymax() - hole.ymin()) +
+                                    CGAL::square(hole.zmax() - hole.zmin()));
+  CGAL::Euler::remove_face(holed.halfedge(f), holed);
+  holed.collect_garbage();
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(holed);
+  const double longest = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
+  // cubes 1.5 times the hole, then a fifth of it
+  const int coarse = int(longest / (1.5 * diagonal)), fine = int(5 * longest / diagonal);
+  ASSERT_GE(coarse, 4);
+  ASSERT_LE(fine, 1024);
+  Mesh closed, open;
+  const auto r = NR::nonobtuse_marching_cubes(holed, closed, NR::parameters::resolution(coarse));
+  EXPECT_FALSE(r.self_intersecting_input);
+  EXPECT_EQ(NR::quality_report(written_and_reread(closed, "gap.off"), nullptr, one_self_intersection()).border_cycles, 0u);
+  NR::nonobtuse_marching_cubes(holed, open, NR::parameters::resolution(fine));
+  const NR::Quality_report q = NR::quality_report(written_and_reread(open, "hole.off"), nullptr, one_self_intersection());
+  EXPECT_TRUE(q.certified);
+  EXPECT_EQ(q.border_cycles, 1u);
+}
+
+// The winding number alone: the union of overlapping parts and of a
+// self-intersecting closed input, closed, and a gap smaller than a cube closed.
+TEST(MarchingCubes, WindingNumberSignsGiveTheUnion)
+{
+  const Mesh sphere = load("sphere.off");
+  const double diameter = CGAL::Polygon_mesh_processing::bbox(sphere).xmax() -
+                          CGAL::Polygon_mesh_processing::bbox(sphere).xmin();
+  Mesh holed = load("elephant.off");
+  CGAL::Euler::remove_face(holed.halfedge(*holed.faces().begin()), holed);
+  holed.collect_garbage();
+  const std::vector<std::tuple<std::string, Mesh, int, std::size_t> > inputs{
+      {"two overlapping spheres", with_moved_copy(sphere, Kernel::Vector_3(0.35, 0.1, 0.05) * diameter), 60, 1},
+      {"cow.off", load("cow.off"), 100, 2},  // 2: a horn tip thinner than a cube
+      {"holed elephant", holed, 23, 4}};     // 4: thin parts at this coarse resolution
+  for(const auto& input : inputs) {
+    Mesh out;
+    const auto r = NR::nonobtuse_marching_cubes(
+        std::get<1>(input), out, NR::parameters::combine(NR::parameters::resolution(std::get<2>(input)),
+                                                         NR::parameters::sign_source(NR::Sign_source::winding_number)));
+    EXPECT_EQ(r.cubes_signed_by_winding_number, r.cubes_intersected) << std::get<0>(input);
+    const NR::Quality_report q = NR::quality_report(written_and_reread(out, "union.off"), nullptr, one_self_intersection());
+    EXPECT_TRUE(q.certified) << std::get<0>(input);
+    EXPECT_EQ(q.border_cycles, 0u) << std::get<0>(input);
+    EXPECT_LE(q.connected_components, std::get<3>(input)) << std::get<0>(input);
   }
 }

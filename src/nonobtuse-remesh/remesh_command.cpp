@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // nonobtuse-remesh remesh INPUT -o OUTPUT [--resolution N | --target-vertices V]
-//                  [--stop-after init|valence|fit] [--signs patches|inside-test] [stage options]
+//                  [--stop-after init|valence|fit] [--signs auto|patches|winding-number|inside-test] [stage options]
 //                  [--lod R,R...] [--report FILE.json] [--angle-histogram FILE.svg]
 //                  [--color-by-angle smallest|largest]
 
@@ -19,6 +19,7 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <sstream>
 
@@ -155,8 +156,10 @@ int remesh_command(int argc, char** argv)
      "last stage to run: init, valence or fit")
     ("no-valence-cleanup", "skip the removal of bad-valence vertices between init and fit")
     ("no-vertex-split", "valence: removal only, as in the thesis (no vertex splits)")
-    ("signs", po::value<std::string>(&signs)->default_value("patches"),
-     "corner signs: patches (open inputs too) or inside-test (closed inputs)")
+    ("signs", po::value<std::string>(&signs)->default_value("auto"),
+     "corner signs: auto (patches, and the winding number where the input overlaps itself or has a gap "
+     "smaller than a cube), patches (the thesis's), winding-number (everywhere) or inside-test (closed "
+     "inputs)")
     ("alpha", po::value<double>(&alpha)->default_value(0.5), "fit: weight of the distance term, in [0, 1]")
     ("drum-subdivisions,k", po::value<int>(&drum_subdivisions)->default_value(2),
      "fit: drum planes per side in the feasible regions, in [1, 16]")
@@ -213,8 +216,12 @@ int remesh_command(int argc, char** argv)
     const NR::Remeshing_stage last = NR::stage_from_name(stop_after);
     const bool valence_cleanup = vm.count("no-valence-cleanup") == 0;
     if(vm.count("max-moves") && max_moves < 0) throw std::invalid_argument("--max-moves must be at least 0");
-    if(signs != "patches" && signs != "inside-test")
-      throw std::invalid_argument("--signs must be patches or inside-test (got '" + signs + "')");
+    const std::map<std::string, NR::Sign_source> sign_sources{{"auto", NR::Sign_source::automatic},
+                                                              {"patches", NR::Sign_source::patches},
+                                                              {"winding-number", NR::Sign_source::winding_number},
+                                                              {"inside-test", NR::Sign_source::inside_test}};
+    if(sign_sources.count(signs) == 0)
+      throw std::invalid_argument("--signs must be auto, patches, winding-number or inside-test (got '" + signs + "')");
     if(vm.count("target-vertices") && !vm["resolution"].defaulted())
       throw std::invalid_argument("give one of --resolution and --target-vertices");
     if(vm.count("target-vertices") && (target_vertices < 4 || target_vertices > 100000000))
@@ -246,7 +253,7 @@ int remesh_command(int argc, char** argv)
       throw NR::Output_error("cannot write '" + output_path + "': unsupported extension (expected .off, .obj, .ply or .stl)");
 
     const Mesh input = load_mesh(input_path);
-    const NR::Sign_source source = signs == "patches" ? NR::Sign_source::patches : NR::Sign_source::inside_test;
+    const NR::Sign_source source = sign_sources.at(signs);
     Pipeline_progress progress;
     progress.line.quiet = quiet;
     progress.stages = 1 + int(last != NR::Remeshing_stage::initial_mesh && valence_cleanup) +

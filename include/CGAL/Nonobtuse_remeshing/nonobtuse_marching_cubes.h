@@ -17,6 +17,7 @@
 #include <CGAL/Nonobtuse_remeshing/internal/mesh_cube_intersection.h>
 #include <CGAL/Nonobtuse_remeshing/internal/patches_and_signs.h>
 #include <CGAL/Nonobtuse_remeshing/internal/stitching.h>
+#include <CGAL/Nonobtuse_remeshing/internal/winding_number_signs.h>
 #include <CGAL/Nonobtuse_remeshing/parameters.h>
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -44,10 +45,22 @@ namespace Nonobtuse_remeshing {
 /// Where the corner signs of the Marching Cubes come from.
 enum class Sign_source
 {
+  /// `patches`, except in the cubes where the input overlaps itself or has a
+  /// gap (a border cycle smaller than a cube), which are signed by the
+  /// generalized winding number: the surface of what the input encloses (the
+  /// union of overlapping parts) stays closed there; on inputs without
+  /// self-intersections and gaps, exactly `patches`
+  automatic,
   /// per cube and per patch of input triangles, from the orientation of the
   /// patch (thesis, section 4.2.2); works for open inputs
   patches,
-  /// one sign per grid corner from an exact inside/outside test; closed inputs only
+  /// one sign per grid corner from the generalized winding number (inside
+  /// where it is 1 or more: the union of overlapping parts): closed or nearly
+  /// closed inputs, self-intersecting ones included; gaps smaller than about a
+  /// cube are closed, larger holes stay open (no cube there holds a triangle)
+  winding_number,
+  /// one sign per grid corner from an exact inside/outside test (ray parity:
+  /// where parts overlap, the overlap is outside); closed inputs only
   inside_test
 };
 
@@ -68,6 +81,11 @@ struct Marching_cubes_result
   std::size_t cubes_with_several_patches = 0;
   std::size_t patches = 0;
   std::size_t patches_ignored = 0;             ///< sign conflicts
+  bool self_intersecting_input = false;        ///< decided when the sign source is `automatic`
+  std::size_t cubes_signed_by_patches = 0;     ///< cubes whose corner signs came from patches (section 4.2.2)
+  std::size_t cubes_signed_by_winding_number = 0;  ///< ... from the winding number
+  std::size_t cubes_signed_by_inside_test = 0;     ///< ... from the inside test
+  double winding_number_seconds = 0.;          ///< self-intersection test and winding numbers
   std::size_t faces_stitched = 0;              ///< grid faces where stitching acted
   std::size_t welds_refused = 0;               ///< midpoint copies kept apart
   std::size_t non_manifold_faces_removed = 0;  ///< defects removed, never left
@@ -96,6 +114,11 @@ void for_each_field(const Marching_cubes_result& r, F&& f)
   f("cubes_with_several_patches", r.cubes_with_several_patches);
   f("patches", r.patches);
   f("patches_ignored", r.patches_ignored);
+  f("self_intersecting_input", r.self_intersecting_input);
+  f("cubes_signed_by_patches", r.cubes_signed_by_patches);
+  f("cubes_signed_by_winding_number", r.cubes_signed_by_winding_number);
+  f("cubes_signed_by_inside_test", r.cubes_signed_by_inside_test);
+  f("winding_number_seconds", r.winding_number_seconds);
   f("cube_faces_stitched", r.faces_stitched);
   f("welds_refused", r.welds_refused);
   f("non_manifold_faces_removed", r.non_manifold_faces_removed);
@@ -121,9 +144,13 @@ void for_each_field(const Marching_cubes_result& r, F&& f)
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{resolution} cubes along the longest side (default 100)
 ///     \cgalParamType{`int`} \cgalParamNEnd
-///   \cgalParamNBegin{sign_source} `Sign_source::patches` (default) or
+///   \cgalParamNBegin{sign_source} `Sign_source::automatic` (default),
+///     `Sign_source::patches`, `Sign_source::winding_number` or
 ///     `Sign_source::inside_test` (closed inputs only)
 ///     \cgalParamType{`Sign_source`} \cgalParamNEnd
+///   \cgalParamNBegin{number_of_threads} threads of the self-intersection test and of the
+///     winding numbers (0, the default: one per core); the result does not depend on it
+///     \cgalParamType{`int`} \cgalParamNEnd
 ///   \cgalParamNBegin{memory_budget} bytes the construction, and the stages
 ///     after it, may use, as estimated from the patches of input triangles met
 ///     by the grid (about 2 KiB each, measured peak); a `double`, default
@@ -155,7 +182,9 @@ Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, Triang
 
   Marching_cubes_result result;
   result.resolution = choose_parameter(get_parameter(np, internal_np::resolution), 100);
-  const Sign_source source = choose_parameter(get_parameter(np, internal_np::sign_source), Sign_source::patches);
+  const Sign_source source = choose_parameter(get_parameter(np, internal_np::sign_source), Sign_source::automatic);
+  const int threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 0);
+  if(threads < 0) throw Bad_parameter("the number of threads must not be negative");
   if(!is_triangle_mesh(input) || faces(input).size() == 0)
     throw Bad_input("nonobtuse_marching_cubes: the input must be a non-empty triangle mesh");
   if(source == Sign_source::inside_test && !is_closed(input))
@@ -203,9 +232,38 @@ Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, Triang
   result.cubes_intersected = cubes.size();
 
   // Phase 2: patches and signs.
-  const std::vector<internal::Patch> patches = source == Sign_source::patches
-                                                   ? internal::patches_and_signs(grid, cubes, in)
-                                                   : internal::inside_test_patches(input, input_vpm, grid, cubes);
+  std::vector<std::size_t> input_component = internal::input_components(in);
+  std::vector<internal::Patch> patches;
+  if(source == Sign_source::inside_test) {
+    patches = internal::inside_test_patches(input, input_vpm, grid, cubes);
+    result.cubes_signed_by_inside_test = cubes.size();
+  } else {
+    if(source != Sign_source::winding_number) patches = internal::patches_and_signs(grid, cubes, in);
+    const auto winding_start = std::chrono::steady_clock::now();
+    // defects: faces that cross another one or border a gap
+    std::vector<bool> defect;
+    bool defects = false;
+    if(source == Sign_source::automatic) {
+      defect = internal::crossing_faces(input, input_vpm, threads);
+      result.self_intersecting_input = std::find(defect.begin(), defect.end(), true) != defect.end();
+      const std::vector<bool> gap = internal::gap_faces(input, input_vpm, grid.cube_size());
+      for(std::size_t t = 0; t < defect.size(); ++t) defect[t] = defect[t] || gap[t];
+      defects = std::find(defect.begin(), defect.end(), true) != defect.end();
+    }
+    if(source == Sign_source::winding_number || defects) {
+      internal::Thread_pool pool(threads);
+      const internal::Corner_winding_numbers w(grid, cubes, in, usable, pool);
+      if(source == Sign_source::winding_number) {
+        patches = internal::winding_number_patches(grid, cubes, w, input_component);
+        result.cubes_signed_by_winding_number = cubes.size();
+      } else {
+        result.cubes_signed_by_winding_number =
+            internal::sign_overlaps_and_gaps_by_winding_number(grid, cubes, w, defect, patches, input_component);
+      }
+    }
+    result.winding_number_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - winding_start).count();
+    result.cubes_signed_by_patches = cubes.size() - result.cubes_signed_by_winding_number;
+  }
   result.patches = patches.size();
   if(bytes_per_patch * double(patches.size()) > budget)
     throw Memory_budget_exceeded("at resolution " + std::to_string(result.resolution) + " the initial mesh would need about " +
@@ -252,10 +310,9 @@ Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, Triang
   }
 
   // Phase 3: welding, stitching, clean-up.
-  const std::vector<std::size_t> input_component = internal::input_components(in);
   internal::Stitcher stitcher(grid, cubes.cube_ids, patches, input_component);
   internal::Marching_cubes_soup soup = stitcher.run();
-  if(source == Sign_source::inside_test)
+  if(source == Sign_source::inside_test || source == Sign_source::winding_number)
     internal::orient_like_input(in, input_component, patches, soup);
   result.faces_stitched = soup.faces_stitched;
   result.welds_refused = soup.welds_refused;

@@ -42,7 +42,7 @@ namespace Nonobtuse_remeshing {
 ///     initial mesh misses the target by more than 10%, it is rebuilt once at the resolution scaled
 ///     by the square root of the ratio (and the first one kept if that fails)
 ///     \cgalParamType{`std::size_t`} \cgalParamNEnd
-///   \cgalParamNBegin{sign_source} corner signs of the Marching Cubes; default `Sign_source::patches`
+///   \cgalParamNBegin{sign_source} corner signs of the Marching Cubes; default `Sign_source::automatic`
 ///     \cgalParamType{`Sign_source`} \cgalParamNEnd
 ///   \cgalParamNBegin{memory_budget} see `nonobtuse_marching_cubes()`
 ///     \cgalParamType{`double`} \cgalParamNEnd

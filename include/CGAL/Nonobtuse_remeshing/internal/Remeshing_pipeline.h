@@ -65,9 +65,10 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
                                                : choose_parameter(get_parameter(np, internal_np::resolution), 100);
   if(stats.resolution < 1 || stats.resolution > 1024)
     throw Bad_parameter("the resolution must lie in [1, 1024]");
-  const Sign_source signs = choose_parameter(get_parameter(np, internal_np::sign_source), Sign_source::patches);
+  const Sign_source signs = choose_parameter(get_parameter(np, internal_np::sign_source), Sign_source::automatic);
   const double budget = choose_parameter(get_parameter(np, internal_np::memory_budget), default_memory_budget);
   if(!(budget > 0.)) throw Bad_parameter("the memory budget must be positive");
+  const int threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 0);
 
   auto given = choose_parameter(get_parameter(np, internal_np::remeshing_visitor), Default_remeshing_visitor());
   auto& visitor = internal::visitor_reference(given);
@@ -117,7 +118,7 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
       return nonobtuse_marching_cubes(
           *surface, mesh,
           parameters::combine(parameters::resolution(resolution), parameters::sign_source(signs),
-                              parameters::memory_budget(budget)));
+                              parameters::memory_budget(budget), parameters::number_of_threads(threads)));
     };
     stats.initial_mesh = build(stats.resolution, output);
     if(stats.target_vertices > 0) {

@@ -41,7 +41,8 @@ struct Patch
   std::int64_t cube = 0;
   std::vector<std::size_t> triangles;  // sorted input triangle indices
   State state = black;
-  unsigned config = 0;                 // bit c set: corner c is inside ('-')
+  bool voted = false;                  // some corner got a vote (not ignored)
+  unsigned config = 0;                 // bit c set: corner c is inside ('-'), when voted
 };
 
 /// The input as phase 2 needs it: triangles and, per triangle, the three
@@ -175,13 +176,14 @@ inline std::vector<Patch> patches_and_signs(const Grid& grid, const Cube_triangl
     for(std::size_t p = first_patch; p < patches.size(); ++p) {
       bool voted = false;
       unsigned config = 0;
-      if(!signs::patch_signs(grid, cube, input, patches[p].triangles, config, voted))
+      if(!signs::patch_signs(grid, cube, input, patches[p].triangles, config, voted)) {
         patches[p].state = Patch::ignored;
-      else if(voted && config != 0 && config != 255 &&
-              !marching_cubes::table()[config].triangles.empty()) {
-        patches[p].state = Patch::triangulated;
-        patches[p].config = config;
+        continue;
       }
+      patches[p].voted = voted;
+      patches[p].config = config;
+      if(voted && config != 0 && config != 255 && !marching_cubes::table()[config].triangles.empty())
+        patches[p].state = Patch::triangulated;
     }
   }
   return patches;
