@@ -376,7 +376,7 @@ TEST(MarchingCubes, SeveralComponentsAreKept)
         two, out, NR::parameters::combine(NR::parameters::resolution(60), NR::parameters::sign_source(source)));
     EXPECT_EQ(r.components_out, 2u);
     EXPECT_EQ(r.borders_out, 0u);
-    const NR::Quality_report q = NR::quality_report(out, nullptr, one_self_intersection());
+    const NR::Quality_report q = NR::quality_report(written_and_reread(out, "two.off"), nullptr, one_self_intersection());
     EXPECT_EQ(q.euler_characteristic, 4);
     EXPECT_TRUE(q.certified);
   }
@@ -394,7 +394,8 @@ TEST(MarchingCubes, AllSignSourcesAgreeOnClosedInputs)
       Mesh out;
       NR::nonobtuse_marching_cubes(input, out, NR::parameters::combine(NR::parameters::resolution(70),
                                                                        NR::parameters::sign_source(source)));
-      const NR::Quality_report q = NR::quality_report(out, nullptr, one_self_intersection());
+      const NR::Quality_report q = NR::quality_report(written_and_reread(out, "closed.off"), nullptr,
+                                                      one_self_intersection());
       EXPECT_TRUE(q.certified) << name;
       EXPECT_EQ(q.non_manifold_vertices, 0u) << name;
       EXPECT_EQ(q.border_cycles, 0u) << name;

@@ -85,7 +85,7 @@ struct Marching_cubes_result
   std::size_t cubes_signed_by_patches = 0;     ///< cubes whose corner signs came from patches (section 4.2.2)
   std::size_t cubes_signed_by_winding_number = 0;  ///< ... from the winding number
   std::size_t cubes_signed_by_inside_test = 0;     ///< ... from the inside test
-  double winding_number_seconds = 0.;          ///< self-intersection test and winding numbers
+  double winding_number_seconds = 0.;          ///< self-intersection test, gap search and winding numbers
   std::size_t faces_stitched = 0;              ///< grid faces where stitching acted
   std::size_t welds_refused = 0;               ///< midpoint copies kept apart
   std::size_t non_manifold_faces_removed = 0;  ///< defects removed, never left
@@ -240,18 +240,18 @@ Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, Triang
   } else {
     if(source != Sign_source::winding_number) patches = internal::patches_and_signs(grid, cubes, in);
     const auto winding_start = std::chrono::steady_clock::now();
+    internal::Thread_pool pool(threads);
     // defects: faces that cross another one or border a gap
     std::vector<bool> defect;
     bool defects = false;
     if(source == Sign_source::automatic) {
-      defect = internal::crossing_faces(input, input_vpm, threads);
+      defect = internal::crossing_faces(input, input_vpm, pool);
       result.self_intersecting_input = std::find(defect.begin(), defect.end(), true) != defect.end();
       const std::vector<bool> gap = internal::gap_faces(input, input_vpm, grid.cube_size());
       for(std::size_t t = 0; t < defect.size(); ++t) defect[t] = defect[t] || gap[t];
       defects = std::find(defect.begin(), defect.end(), true) != defect.end();
     }
     if(source == Sign_source::winding_number || defects) {
-      internal::Thread_pool pool(threads);
       const internal::Corner_winding_numbers w(grid, cubes, in, usable, pool);
       if(source == Sign_source::winding_number) {
         patches = internal::winding_number_patches(grid, cubes, w, input_component);

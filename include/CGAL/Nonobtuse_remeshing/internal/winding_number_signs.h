@@ -51,6 +51,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <numeric>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -60,20 +61,20 @@ namespace Nonobtuse_remeshing {
 namespace internal {
 
 /// Per input face (in the order of `faces(mesh)`), whether it intersects
-/// another face (CGAL's exact test, on every core with oneTBB).
+/// another face (CGAL's exact test, on the pool's cores with oneTBB).
 template <typename TriangleMesh, typename VertexPointMap>
-std::vector<bool> crossing_faces(const TriangleMesh& mesh, VertexPointMap points, int threads)
+std::vector<bool> crossing_faces(const TriangleMesh& mesh, VertexPointMap points, const Thread_pool& pool)
 {
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   const auto np = CGAL::parameters::vertex_point_map(epick_points(points)).geom_traits(Epick());
   std::vector<std::pair<face_descriptor, face_descriptor> > pairs;
 #ifdef CGAL_LINKED_WITH_TBB
-  if(Thread_pool(threads).workers() > 1)
+  if(pool.workers() > 1)
     Polygon_mesh_processing::self_intersections<Parallel_tag>(faces(mesh), mesh, std::back_inserter(pairs), np);
   else
 #endif
     Polygon_mesh_processing::self_intersections(faces(mesh), mesh, std::back_inserter(pairs), np);
-  (void)threads;
+  (void)pool;
   std::vector<bool> crossing(faces(mesh).size(), false);
   if(pairs.empty()) return crossing;
   std::unordered_map<face_descriptor, std::size_t> index;
@@ -182,26 +183,18 @@ inline Patch whole_cube_patch(const Cube_triangles& cubes, std::size_t c, unsign
   return patch;
 }
 
-// Input components that meet in a cube signed by the winding number are
-// one solid there (their union): `component` is renumbered so that they are
-// one component (for the islands of the stitching and the orientation).
-class Component_union
+// Input components that meet in a cube signed by the winding number are one
+// solid there (their union): they become one component (for the islands of
+// the stitching and the orientation).
+// `signed_by_w`: indices of those patches.
+inline void join_components(const std::vector<Patch>& patches, const std::vector<std::size_t>& signed_by_w,
+                            std::vector<std::size_t>& component)
 {
-public:
-  explicit Component_union(std::vector<std::size_t>& component) : component_(component), sets_(component.size()) {}
-  void add(const Patch& patch)
-  {
-    for(std::size_t t : patch.triangles) sets_.join(component_[t], component_[patch.triangles.front()]);
-  }
-  ~Component_union()
-  {
-    for(std::size_t& c : component_) c = sets_.find(c);
-  }
-
-private:
-  std::vector<std::size_t>& component_;
-  Index_sets sets_;
-};
+  Index_sets sets(component.size());
+  for(std::size_t p : signed_by_w)
+    for(std::size_t t : patches[p].triangles) sets.join(component[t], component[patches[p].triangles.front()]);
+  for(std::size_t& c : component) c = sets.find(c);
+}
 
 } // namespace signs
 
@@ -212,7 +205,6 @@ inline std::vector<Patch> winding_number_patches(const Grid& grid, const Cube_tr
                                                  const Corner_winding_numbers& w,
                                                  std::vector<std::size_t>& input_component)
 {
-  signs::Component_union components(input_component);
   std::vector<Patch> patches;
   patches.reserve(cubes.size());
   for(std::size_t c = 0; c < cubes.size(); ++c) {
@@ -221,8 +213,10 @@ inline std::vector<Patch> winding_number_patches(const Grid& grid, const Cube_tr
     for(int corner = 0; corner < 8; ++corner)
       if(Corner_winding_numbers::inside(w.at(cube, corner))) config |= 1u << corner;
     patches.push_back(signs::whole_cube_patch(cubes, c, config));
-    components.add(patches.back());
   }
+  std::vector<std::size_t> all(patches.size());
+  std::iota(all.begin(), all.end(), std::size_t(0));
+  signs::join_components(patches, all, input_component);
   return patches;
 }
 
@@ -237,7 +231,6 @@ inline std::size_t sign_overlaps_and_gaps_by_winding_number(const Grid& grid, co
                                                             const std::vector<bool>& defect, std::vector<Patch>& patches,
                                                             std::vector<std::size_t>& input_component)
 {
-  signs::Component_union components(input_component);
   const bool inwards = w.inwards();
   std::vector<std::int64_t> defect_cubes;  // cubes holding a defect triangle
   for(std::size_t c = 0; c < cubes.size(); ++c)
@@ -247,50 +240,57 @@ inline std::size_t sign_overlaps_and_gaps_by_winding_number(const Grid& grid, co
         break;
       }
   std::sort(defect_cubes.begin(), defect_cubes.end());
+  const auto near_defect = [&](const std::array<int, 3>& cube) {
+    for(int dx = -1; dx <= 1; ++dx)
+      for(int dy = -1; dy <= 1; ++dy)
+        for(int dz = -1; dz <= 1; ++dz)
+          if(grid.valid_cube(cube[0] + dx, cube[1] + dy, cube[2] + dz) &&
+             std::binary_search(defect_cubes.begin(), defect_cubes.end(),
+                                grid.cube_id(cube[0] + dx, cube[1] + dy, cube[2] + dz)))
+            return true;
+    return false;
+  };
+  // the patches [begin, end) of a cube whose corners enclose `enclosed`
+  const auto patches_overlap = [&](std::size_t begin, std::size_t end, unsigned enclosed) {
+    unsigned claimed = 0;  // corners some patch puts inside its sheet
+    for(std::size_t p = begin; p < end; ++p) {
+      if(patches[p].state == Patch::ignored) return true;
+      if(!patches[p].voted) continue;
+      const unsigned patch_inside = inwards ? ~patches[p].config & 255u : patches[p].config;
+      // outside its sheet but inside another part, or inside two sheets
+      // (the two sides of a thin part each claim the corners beyond the other)
+      if((enclosed & ~patch_inside) != 0 || (claimed & patch_inside) != 0) return true;
+      claimed |= patch_inside;
+    }
+    return false;
+  };
   std::vector<Patch> result;
   result.reserve(patches.size());
-  std::size_t replaced = 0;
+  std::vector<std::size_t> signed_by_w;  // indices into result
   for(std::size_t c = 0, begin = 0; c < cubes.size(); ++c) {
     std::size_t end = begin;
     while(end < patches.size() && patches[end].cube == cubes.cube_ids[c]) ++end;
     const std::array<int, 3> cube = grid.cube_index(cubes.cube_ids[c]);
-    bool decisive = true, overlap = false;
+    bool decisive = true, inverted = false;
     unsigned enclosed = 0;  // corners inside the enclosed region
     for(int corner = 0; corner < 8; ++corner) {
       const double value = w.at(cube, corner);
       decisive = decisive && Corner_winding_numbers::decisive(value);
-      overlap = overlap || Corner_winding_numbers::inverted(value);
+      inverted = inverted || Corner_winding_numbers::inverted(value);
       if(Corner_winding_numbers::inside(value)) enclosed |= 1u << corner;
     }
-    unsigned claimed = 0;  // corners some patch puts inside its sheet
-    for(int dx = -1; dx <= 1 && !overlap; ++dx)
-      for(int dy = -1; dy <= 1 && !overlap; ++dy)
-        for(int dz = -1; dz <= 1 && !overlap; ++dz)
-          overlap = grid.valid_cube(cube[0] + dx, cube[1] + dy, cube[2] + dz) &&
-                    std::binary_search(defect_cubes.begin(), defect_cubes.end(),
-                                       grid.cube_id(cube[0] + dx, cube[1] + dy, cube[2] + dz));
-    overlap = overlap && decisive;
-    for(std::size_t p = begin; p < end && decisive && !overlap; ++p) {
-      if(patches[p].state == Patch::ignored) overlap = true;
-      else if(patches[p].voted) {
-        const unsigned patch_inside = inwards ? ~patches[p].config & 255u : patches[p].config;
-        // outside its sheet but inside another part, or inside two sheets
-        // (the two sides of a thin part each claim the corners beyond the other)
-        overlap = (enclosed & ~patch_inside) != 0 || (claimed & patch_inside) != 0;
-        claimed |= patch_inside;
-      }
-    }
-    if(overlap) {
+    if(decisive && (inverted || near_defect(cube) || patches_overlap(begin, end, enclosed))) {
+      signed_by_w.push_back(result.size());
       result.push_back(signs::whole_cube_patch(cubes, c, inwards ? ~enclosed & 255u : enclosed));
-      components.add(result.back());
-      ++replaced;
     } else {
-      result.insert(result.end(), patches.begin() + std::ptrdiff_t(begin), patches.begin() + std::ptrdiff_t(end));
+      result.insert(result.end(), std::make_move_iterator(patches.begin() + std::ptrdiff_t(begin)),
+                    std::make_move_iterator(patches.begin() + std::ptrdiff_t(end)));
     }
     begin = end;
   }
+  signs::join_components(result, signed_by_w, input_component);
   patches.swap(result);
-  return replaced;
+  return signed_by_w.size();
 }
 
 } // namespace internal
