@@ -4,6 +4,8 @@
 // no output file on failure, and JSON that agrees with the library.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/nonobtuse_remeshing.h>
 
@@ -14,6 +16,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 #include <sys/wait.h>
@@ -262,6 +265,64 @@ TEST(Cli, SelfIntersectingInputComesOutClosed)
                   j["init"]["cubes_signed_by_patches"].get<std::size_t>(),
               j["init"]["cubes_intersected"].get<std::size_t>());
   }
+}
+
+// --target-vertices keeps the input's topology (issue 19): the hand's grid
+// for 10,000 vertices cuts a fingertip off, so the initial mesh is refined,
+// fitted and decimated back to the target. The written file is re-read: the
+// input's components, borders and Euler characteristic, the target within
+// 10%, certified. --topology ignore keeps the budget's grid and says what
+// differs; the open, self-crossing pig matches at once.
+TEST(Cli, TargetVerticesKeepsTheInputTopology)
+{
+  const std::string folder = scratch();
+  const auto topology_of = [](const Mesh& mesh) {
+    std::vector<Mesh::Halfedge_index> borders;
+    CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(borders));
+    std::map<Mesh::Face_index, std::size_t> component;
+    const std::size_t components =
+        CGAL::Polygon_mesh_processing::connected_components(mesh, boost::make_assoc_property_map(component));
+    const long euler = long(mesh.number_of_vertices()) - long(mesh.number_of_edges()) + long(mesh.number_of_faces());
+    return std::to_string(components) + " " + std::to_string(borders.size()) + " " + std::to_string(euler);
+  };
+  for(const std::string name : {"hand", "pig"}) {
+    const std::string out = folder + "/" + name + ".off", json = folder + "/" + name + ".json";
+    const std::string target = name == "hand" ? "10000" : "3000";
+    const Outcome r = run("remesh " + data(name + ".off") + " -o " + out + " -V " + target + " -q --report " + json);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("topology: the input's"), std::string::npos) << r.out;
+    Mesh mesh, input;
+    NR::read_triangle_mesh(out, mesh);
+    NR::read_triangle_mesh(data(name + ".off"), input);
+    EXPECT_TRUE(NR::certify_angle_bounds(mesh).is_certified()) << name;
+    EXPECT_EQ(topology_of(mesh), topology_of(input)) << name;
+    EXPECT_NEAR(double(mesh.number_of_vertices()), std::stod(target), 0.1 * std::stod(target)) << name;
+    const auto j = nlohmann::json::parse(slurp(json));
+    EXPECT_EQ(j["topology"]["matches"], true) << name;
+    EXPECT_EQ(j["topology"]["keep_topology"], true) << name;
+    if(name == "hand") {
+      EXPECT_GE(j["topology"]["refinements"].get<int>(), 1);
+      EXPECT_GT(j["topology"]["resolution"].get<int>(), j["topology"]["budget_resolution"].get<int>());
+      EXPECT_EQ(j["decimation"]["target_reached"], true);
+      EXPECT_EQ(j["decimation"]["vertices_after"], mesh.number_of_vertices());
+      EXPECT_NE(r.out.find("topology: refined the initial mesh"), std::string::npos) << r.out;
+    } else {
+      EXPECT_EQ(j["topology"]["crossing_groups"], 1);  // pig crosses itself: its Euler characteristic is not compared
+    }
+  }
+  const std::string out = folder + "/ignored.off", json = folder + "/ignored.json";
+  const Outcome r = run("remesh " + data("hand.off") + " -o " + out + " -V 10000 --topology ignore -q --report " + json);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("topology: differs from the input's in 1 of 1"), std::string::npos) << r.out;
+  Mesh mesh;
+  NR::read_triangle_mesh(out, mesh);
+  const auto j = nlohmann::json::parse(slurp(json));
+  EXPECT_EQ(j["topology"]["matches"], false);
+  EXPECT_EQ(j["topology"]["refinements"], 0);
+  EXPECT_EQ(topology_of(mesh).substr(0, 2), std::to_string(j["topology"]["output_components"].get<int>()) + " ");
+  EXPECT_GT(j["topology"]["output_components"].get<int>(), 1);
+  EXPECT_EQ(run("remesh " + data("hand.off") + " -o " + out + "2.off -V 100 --topology maybe").code, 2);
+  EXPECT_EQ(run("remesh " + data("hand.off") + " -o " + out + "2.off -V 100 --max-resolution 0").code, 2);
 }
 
 // The default pipeline runs init and fit; the fit's statistics are printed

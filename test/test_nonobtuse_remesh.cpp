@@ -46,6 +46,8 @@ struct Recording_visitor
       EXPECT_EQ(p.stage, NR::Remeshing_stage::fit);
       EXPECT_EQ(p.fraction, -1.);
       ++fit_calls;
+    } else if(p.decimation) {
+      EXPECT_EQ(p.stage, NR::Remeshing_stage::decimation);
     } else {
       EXPECT_TRUE(p.fraction == 0. || p.fraction == 1.);
     }
@@ -143,6 +145,100 @@ TEST(NonobtuseRemesh, CancellationAndStopAfter)
   const Mesh reread = nonobtuse_test::written_and_reread(output, "initial.off");
   EXPECT_EQ(num_faces(reread), num_faces(output));
   EXPECT_TRUE(NR::certify_angle_bounds(reread, NR::parameters::min_angle(35.26)).is_certified());
+}
+
+// The initial mesh's topology against the input's, per input component:
+// two disjoint spheres are two components that match; two overlapping ones
+// are one crossing group whose union matches; the hand at resolution 47
+// (a fingertip cut off, found by hand) differs, and is refined when asked.
+TEST(NonobtuseRemesh, TopologyIsComparedPerInputComponent)
+{
+  const Mesh sphere = nonobtuse_test::load("sphere.off");
+  const auto two_spheres = [&](double offset) {
+    Mesh mesh = sphere;
+    Mesh moved = sphere;
+    for(auto v : vertices(moved)) moved.point(v) = moved.point(v) + nonobtuse_test::Kernel::Vector_3(offset, 0.1, 0.05);
+    mesh.join(moved);
+    return mesh;
+  };
+  const auto init = NR::parameters::stop_after(NR::Remeshing_stage::initial_mesh);
+  Mesh output;
+  auto s = NR::nonobtuse_remesh(two_spheres(3.), output, NR::parameters::combine(NR::parameters::resolution(30), init));
+  EXPECT_TRUE(s.topology.compared && s.topology.matches) << s.topology.difference;
+  EXPECT_EQ(s.topology.input_components, 2u);
+  EXPECT_EQ(s.topology.input_groups, 2u);
+  EXPECT_EQ(s.topology.crossing_groups, 0u);
+  EXPECT_EQ(s.topology.output_euler_characteristic, 4);
+  EXPECT_FALSE(s.keep_topology);  // the default with a resolution
+
+  s = NR::nonobtuse_remesh(two_spheres(0.7), output, NR::parameters::combine(NR::parameters::resolution(30), init));
+  EXPECT_TRUE(s.topology.matches) << s.topology.difference;
+  EXPECT_EQ(s.topology.input_components, 2u);
+  EXPECT_EQ(s.topology.input_groups, 1u);
+  EXPECT_EQ(s.topology.crossing_groups, 1u);
+  EXPECT_EQ(s.topology.output_components, 1u);
+
+  const Mesh hand = nonobtuse_test::load("hand.off");
+  s = NR::nonobtuse_remesh(hand, output, NR::parameters::combine(NR::parameters::resolution(47), init));
+  EXPECT_FALSE(s.topology.matches);
+  EXPECT_EQ(s.topology.groups_differing, 1u);
+  EXPECT_EQ(s.topology.output_components, NR::quality_report(output).connected_components);
+  EXPECT_GT(s.topology.output_components, 1u);
+  EXPECT_GE(s.topology.mismatch, 2u);  // a piece cut off: a component and its Euler characteristic
+  EXPECT_NE(s.topology.difference.find("became " + std::to_string(s.topology.output_components) + " components"),
+            std::string::npos)
+      << s.topology.difference;
+  EXPECT_EQ(s.refinements, 0);
+
+  // refined: 47 -> 59 keeps it; a cap at 47 does not let it
+  s = NR::nonobtuse_remesh(hand, output,
+                           NR::parameters::combine(NR::parameters::resolution(47), NR::parameters::keep_topology(true), init));
+  EXPECT_TRUE(s.topology.matches) << s.topology.difference;
+  EXPECT_GE(s.refinements, 1);
+  EXPECT_EQ(s.budget_resolution, 47);
+  EXPECT_GT(s.resolution, 47);
+  EXPECT_LE(s.resolution, s.max_resolution);
+  EXPECT_EQ(s.max_resolution, 94);
+  const Mesh reread = nonobtuse_test::written_and_reread(output, "refined_hand.off");
+  const NR::Quality_report q = NR::quality_report(reread), in = NR::quality_report(hand);
+  EXPECT_EQ(q.connected_components, in.connected_components);
+  EXPECT_EQ(q.border_cycles, in.border_cycles);
+  EXPECT_EQ(q.euler_characteristic, in.euler_characteristic);
+  EXPECT_TRUE(NR::certify_angle_bounds(reread, NR::parameters::min_angle(35.26)).is_certified());
+  s = NR::nonobtuse_remesh(hand, output,
+                           NR::parameters::combine(NR::parameters::resolution(47), NR::parameters::keep_topology(true),
+                                                   NR::parameters::max_resolution(47), init));
+  EXPECT_FALSE(s.topology.matches);
+  EXPECT_EQ(s.refinements, 0);
+  EXPECT_THROW(NR::nonobtuse_remesh(hand, output, NR::parameters::max_resolution(2000)), NR::Bad_parameter);
+}
+
+// A target vertex count keeps the topology: the hand's initial mesh for
+// 10,000 vertices cuts a fingertip off, so it is refined, fitted and
+// decimated back to the target (the fifth stage); the written file has the
+// input's topology, the target's vertex count within 10%, and certifies.
+TEST(NonobtuseRemesh, TargetVerticesKeepsTheTopology)
+{
+  const Mesh hand = nonobtuse_test::load("hand.off");
+  Mesh output;
+  Recording_visitor visitor;
+  const auto s = NR::nonobtuse_remesh(
+      hand, output,
+      NR::parameters::combine(NR::parameters::target_vertices(std::size_t(10000)),
+                              NR::parameters::remeshing_visitor(std::ref(visitor))));
+  EXPECT_TRUE(s.keep_topology);
+  EXPECT_GE(s.refinements, 1);
+  EXPECT_TRUE(s.topology.matches) << s.topology.difference;
+  ASSERT_TRUE(s.decimation_run);
+  EXPECT_EQ(s.decimation.stop_reason, NR::Decimation_stop_reason::target_reached);
+  EXPECT_EQ(visitor.events.back(), "end 3");
+  const Mesh reread = nonobtuse_test::written_and_reread(output, "hand_10000.off");
+  EXPECT_NEAR(double(vertices(reread).size()), 10000., 1000.);
+  EXPECT_TRUE(NR::certify_angle_bounds(reread).is_certified());
+  const NR::Quality_report q = NR::quality_report(reread), in = NR::quality_report(hand);
+  EXPECT_EQ(q.connected_components, in.connected_components);
+  EXPECT_EQ(q.border_cycles, in.border_cycles);
+  EXPECT_EQ(q.euler_characteristic, in.euler_characteristic);
 }
 
 // Bad parameters and inputs throw before any work and leave the output empty.

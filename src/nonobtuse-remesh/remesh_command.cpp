@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // nonobtuse-remesh remesh INPUT -o OUTPUT [--resolution N | --target-vertices V]
-//                  [--stop-after init|valence|fit] [--signs auto|patches|winding-number|inside-test] [stage options]
+//                  [--topology keep|ignore] [--max-resolution N]
+//                  [--stop-after init|valence|fit|decimation] [--signs auto|patches|winding-number|inside-test] [stage options]
 //                  [--lod R,R...] [--report FILE.json] [--angle-histogram FILE.svg]
 //                  [--color-by-angle smallest|largest]
 
@@ -46,6 +47,36 @@ void print_fit(std::ostream& out, const NR::Deform_to_fit_statistics& s)
 {
   print_fields(out, std::string("fit (") + NR::stage_description(NR::Remeshing_stage::fit) + ")", s);
   if(s.budget_exhausted) out << "  note: the budget ran out before the fit converged\n";
+}
+
+// What the refinement for the topology did, and whether the topology matched.
+void print_topology(std::ostream& out, const NR::Nonobtuse_remeshing_statistics& s)
+{
+  const NR::Topology_comparison& t = s.topology;
+  if(s.refinements > 0)
+    out << "topology: refined the initial mesh " << s.refinements << " time(s) from resolution "
+        << s.budget_resolution << " (cap " << s.max_resolution << "); kept resolution " << s.resolution << "\n";
+  if(t.matches)
+    out << "topology: the input's, per input component (" << t.input_components << " component(s), "
+        << t.input_border_cycles << " border(s)"
+        << (t.crossing_groups > 0 ? ", " + std::to_string(t.crossing_groups) +
+                                        " crossing group(s) compared without their Euler characteristic"
+                                  : ", Euler characteristic " + std::to_string(t.input_euler_characteristic))
+        << ")\n";
+  else
+    out << "topology: differs from the input's in " << t.groups_differing << " of " << t.input_groups
+        << " input component group(s): " << t.difference
+        << (s.keep_topology ? " (--max-resolution raises the cap of the refinement)"
+                            : " (--topology keep refines the grid until it matches)")
+        << "\n";
+}
+
+void print_decimation_stage(std::ostream& out, const NR::Angle_bounded_decimation_statistics& s)
+{
+  print_fields(out, std::string("decimation (") + NR::stage_description(NR::Remeshing_stage::decimation) + ")", s);
+  if(s.stop_reason != NR::Decimation_stop_reason::target_reached)
+    out << "  note: the decimation stopped at " << s.vertices_after << " vertices, before the target "
+        << s.target_vertices << ": " << NR::stop_reason_name(s.stop_reason) << "; keeping the topology needs more\n";
 }
 
 // The columns of the thesis's tables, under its names.
@@ -106,6 +137,7 @@ struct Pipeline_progress
   void stage_started(NR::Remeshing_stage stage)
   {
     ++index;
+    stages = (std::max)(stages, index);  // the decimation runs only over the target
     line.show(prefix() + NR::stage_name(stage) + " " + Progress_line::bar(0.), true);
   }
   void stage_finished(NR::Remeshing_stage stage, double seconds)
@@ -124,6 +156,9 @@ struct Pipeline_progress
            << ", " << p.fit->moves << " moves, rms vertex distance " << std::setprecision(3) << p.fit->rms_distance
            << "%";
       line.show(text.str());
+    } else if(p.decimation) {
+      line.show(prefix() + "decimation: " + std::to_string(p.decimation->vertices_after) + " vertices, target " +
+                std::to_string(p.decimation->target_vertices));
     }
     return true;
   }
@@ -133,10 +168,10 @@ struct Pipeline_progress
 
 int remesh_command(int argc, char** argv)
 {
-  std::string input_path, output_path, report_path, stop_after = "fit", signs = "patches", lod, histogram_path,
-      coloring_name;
+  std::string input_path, output_path, report_path, stop_after = "decimation", signs = "patches", lod, histogram_path,
+      coloring_name, topology = "keep";
   Decimation_settings decimation;
-  int resolution = 100, drum_subdivisions = 2, quadric_rings = 0, smoothing_steps = 2;
+  int resolution = 100, drum_subdivisions = 2, quadric_rings = 0, smoothing_steps = 2, max_resolution = 0;
   long long target_vertices = 0;
   double alpha = 0.5, fit_tolerance = 1e-4, max_seconds = 0., memory_limit = 4.;
   long long max_moves = 0;
@@ -152,8 +187,16 @@ int remesh_command(int argc, char** argv)
     ("target-vertices,V", po::value<long long>(&target_vertices),
      "instead of --resolution: about this many output vertices (the resolution is chosen from the input's "
      "area and bounding box)")
-    ("stop-after", po::value<std::string>(&stop_after)->default_value("fit"),
-     "last stage to run: init, valence or fit")
+    ("topology", po::value<std::string>(&topology),
+     "keep: while the initial mesh's topology differs from the input's (per input component: components, "
+     "borders, Euler characteristic), rebuild it at 1.25 times the resolution, up to --max-resolution, then "
+     "decimate the fitted mesh to --target-vertices; ignore: the grid from the budget alone. Default: keep "
+     "with --target-vertices, ignore with --resolution")
+    ("max-resolution", po::value<int>(&max_resolution),
+     "cap of that refinement, in [1, 1024] (default: twice the first resolution)")
+    ("stop-after", po::value<std::string>(&stop_after)->default_value("decimation"),
+     "last stage to run: init, valence, fit or decimation (which runs only when the fitted mesh is over "
+     "--target-vertices by more than 10%)")
     ("no-valence-cleanup", "skip the removal of bad-valence vertices between init and fit")
     ("no-vertex-split", "valence: removal only, as in the thesis (no vertex splits)")
     ("signs", po::value<std::string>(&signs)->default_value("auto"),
@@ -241,7 +284,12 @@ int remesh_command(int argc, char** argv)
     decimation.drum_subdivisions = drum_subdivisions;
     const std::vector<double> ratios = lod.empty() ? std::vector<double>() : parse_ratios(lod);
     if(!ratios.empty()) decimation.check_parameters(ratios);
-    if(!ratios.empty() && last != NR::Remeshing_stage::fit)
+    if(vm.count("topology") && topology != "keep" && topology != "ignore")
+      throw std::invalid_argument("--topology must be keep or ignore (got '" + topology + "')");
+    if(vm.count("max-resolution") && (max_resolution < 1 || max_resolution > 1024))
+      throw std::invalid_argument("--max-resolution must lie in [1, 1024]");
+    const bool keep_topology = vm.count("topology") ? topology == "keep" : vm.count("target-vertices") > 0;
+    if(!ratios.empty() && (last == NR::Remeshing_stage::initial_mesh || last == NR::Remeshing_stage::valence))
       throw std::invalid_argument("--lod needs the whole pipeline (no --stop-after)");
     std::vector<Named_path> outputs{{"-o", output_path},
                                     {vm.count("json") ? "--json" : "--report", report_path},
@@ -257,7 +305,8 @@ int remesh_command(int argc, char** argv)
     Pipeline_progress progress;
     progress.line.quiet = quiet;
     progress.stages = 1 + int(last != NR::Remeshing_stage::initial_mesh && valence_cleanup) +
-                      int(last == NR::Remeshing_stage::fit) + int(!ratios.empty());
+                      int(last == NR::Remeshing_stage::fit || last == NR::Remeshing_stage::decimation) +
+                      int(!ratios.empty());
     Mesh output;
     NR::Nonobtuse_remeshing_statistics stats;
     try {
@@ -267,6 +316,7 @@ int remesh_command(int argc, char** argv)
               vm.count("target-vertices") ? NR::parameters::target_vertices(std::size_t(target_vertices))
                                           : NR::parameters::target_vertices(std::size_t(0)),
               NR::parameters::resolution(resolution), NR::parameters::sign_source(source),
+              NR::parameters::keep_topology(keep_topology), NR::parameters::max_resolution(max_resolution),
               NR::parameters::stop_after(last), NR::parameters::valence_cleanup(valence_cleanup),
               NR::parameters::vertex_split(vm.count("no-vertex-split") == 0),
               NR::parameters::alpha(alpha), NR::parameters::drum_subdivisions(drum_subdivisions),
@@ -302,8 +352,10 @@ int remesh_command(int argc, char** argv)
                    "cube diagonal of it (the largest is "
                 << std::setprecision(3) << stats.largest_missing_component << " across, the cube size "
                 << stats.initial_mesh.cube_size << "): they are below the resolution\n";
+    print_topology(std::cout, stats);
     if(stats.valence_run) print_valence(std::cout, stats.valence);
     if(stats.fit_run) print_fit(std::cout, stats.fit);
+    if(stats.decimation_run) print_decimation_stage(std::cout, stats.decimation);
 
     // The file itself must certify: it is re-read and certified before it
     // replaces anything.
@@ -386,6 +438,12 @@ int remesh_command(int argc, char** argv)
         j["table_7_2"] = table_7_2_json(input_report, report, stats.fit, vm.count("no-lazy-evaluation") == 0,
                                         vm.count("no-early-smoothing") == 0);
       j["init"] = fields_json(stats.initial_mesh);
+      j["topology"] = fields_json(stats.topology);
+      j["topology"]["keep_topology"] = stats.keep_topology;
+      j["topology"]["budget_resolution"] = stats.budget_resolution;
+      j["topology"]["max_resolution"] = stats.max_resolution;
+      j["topology"]["refinements"] = stats.refinements;
+      j["topology"]["resolution"] = stats.resolution;
       j["input_components"] = {{"components", stats.input_components},
                                {"missing", stats.input_components_missing},
                                {"largest_missing_diameter", stats.largest_missing_component},
@@ -393,11 +451,14 @@ int remesh_command(int argc, char** argv)
                                                  "output: it is below the resolution"}};
       if(stats.valence_run) j["valence"] = fields_json(stats.valence);
       if(stats.fit_run) j["fit"] = fields_json(stats.fit);
+      if(stats.decimation_run) j["decimation"] = fields_json(stats.decimation);
       j["output_report"] = report_to_json(output_path, report, {});
       if(!ratios.empty()) j["levels"] = levels_json;
       j["timings"] = {{"init", stats.initial_mesh.seconds},
                       {"valence", stats.valence_run ? stats.valence.seconds : 0.},
                       {"fit", stats.fit_run ? stats.fit.seconds : 0.},
+                      {"decimation", stats.decimation_run ? stats.decimation.seconds : 0.},
+                      {"topology", stats.topology.seconds},
                       {"pipeline", stats.seconds},
                       {"write_and_certify", write_seconds},
                       {"levels", levels_seconds},

@@ -10,6 +10,7 @@
 #include "json_output.h"
 
 #include <CGAL/Nonobtuse_remeshing/nonobtuse_marching_cubes.h>
+#include <CGAL/Nonobtuse_remeshing/remeshing_stages.h>
 #include <CGAL/Nonobtuse_remeshing/statistics.h>
 
 #include <array>
@@ -42,6 +43,7 @@ json field_json(const std::array<T, N>& values)
   return values;
 }
 inline json field_json(const CGAL::Nonobtuse_remeshing::Valence_counts& counts) { return fields_json(counts); }
+inline json field_json(const std::string& text) { return text; }
 
 template <typename T>
 std::enable_if_t<std::is_arithmetic<T>::value, std::string> field_text(T value)
@@ -65,6 +67,7 @@ std::string field_text(const std::array<T, N>& values)
   for(std::size_t i = 0; i < N; ++i) text += (i > 0 ? ", " : "") + field_text(values[i]);
   return text + "]";
 }
+inline std::string field_text(const std::string& text) { return text; }
 inline std::string field_text(const CGAL::Nonobtuse_remeshing::Valence_counts& counts)
 {
   return "(" + fields_text(counts) + ")";

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The whole pipeline in one call: the initial mesh (thesis, chapter 4), the
-// removal of bad-valence vertices (5.7) and deform-to-fit (chapter 5), with
-// one visitor for progress and cancellation across the stages.
+// removal of bad-valence vertices (5.7), deform-to-fit (chapter 5) and, for
+// a target vertex count, angle-bounded decimation (chapter 6), with one
+// visitor for progress and cancellation across the stages.
 
 #ifndef CGAL_NONOBTUSE_REMESHING_NONOBTUSE_REMESH_H
 #define CGAL_NONOBTUSE_REMESHING_NONOBTUSE_REMESH_H
@@ -24,7 +25,18 @@ namespace Nonobtuse_remeshing {
 /// components) into `output`, whose every angle lies in [30, 90] degrees,
 /// certified exactly: nonobtuse Marching Cubes (`nonobtuse_marching_cubes()`),
 /// then the removal of bad-valence vertices (`remove_bad_valence_vertices()`),
-/// then deform-to-fit (`deform_to_fit()`). Each stage certifies every
+/// then deform-to-fit (`deform_to_fit()`).
+///
+/// Beyond the thesis, the topology of the initial mesh is compared with the
+/// input's, per input component (`Topology_comparison`, in the statistics).
+/// With `keep_topology`, while it differs (parts thinner than a cube cut off,
+/// holes opened), the initial mesh is rebuilt at 1.25 times the resolution,
+/// up to `max_resolution`; the first mesh that matches is kept, else the one
+/// with the fewest differences. With a `target_vertices` count, a fitted mesh
+/// over it by more than 10% is then decimated to it (`angle_bounded_decimation()`,
+/// its relaxation fitting to `input`), which keeps the topology.
+///
+/// Each stage certifies every
 /// change it makes, so `output` is certified whenever this function
 /// returns, also when the visitor cancels. `output` is cleared first and
 /// has no garbage at the end. If `input` has zero-area faces, the stages
@@ -42,6 +54,12 @@ namespace Nonobtuse_remeshing {
 ///     initial mesh misses the target by more than 10%, it is rebuilt once at the resolution scaled
 ///     by the square root of the ratio (and the first one kept if that fails)
 ///     \cgalParamType{`std::size_t`} \cgalParamNEnd
+///   \cgalParamNBegin{keep_topology} refine the initial mesh until its topology is the input's;
+///     default true with a `target_vertices` count, false with a `resolution`
+///     \cgalParamType{`bool`} \cgalParamNEnd
+///   \cgalParamNBegin{max_resolution} the cap of that refinement, in [1, 1024]; default 0: twice
+///     the resolution given or chosen for the target (about 4 times the vertices)
+///     \cgalParamType{`int`} \cgalParamNEnd
 ///   \cgalParamNBegin{sign_source} corner signs of the Marching Cubes; default `Sign_source::automatic`
 ///     \cgalParamType{`Sign_source`} \cgalParamNEnd
 ///   \cgalParamNBegin{memory_budget} see `nonobtuse_marching_cubes()`
@@ -50,12 +68,15 @@ namespace Nonobtuse_remeshing {
 ///     \cgalParamType{`bool`} \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_split} see `remove_bad_valence_vertices()`; default true
 ///     \cgalParamType{`bool`} \cgalParamNEnd
-///   \cgalParamNBegin{stop_after} the last stage to run; default `Remeshing_stage::fit`
+///   \cgalParamNBegin{stop_after} the last stage to run; default `Remeshing_stage::decimation`
+///     (which runs only with a `target_vertices` count the fitted mesh exceeds by more than 10%)
 ///     \cgalParamType{`Remeshing_stage`} \cgalParamNEnd
 ///   \cgalParamNBegin{alpha, drum_subdivisions, quadric_rings, smoothing_steps, fit_tolerance,
 ///     max_moves, max_seconds, lazy_evaluation, early_smoothing, tangential_smoothing,
 ///     attract_features, number_of_threads} see `deform_to_fit()` (the drum subdivisions serve the valence stage
 ///     too) \cgalParamNEnd
+///   \cgalParamNBegin{min_interior_valence, min_border_valence, max_error, relaxation} of the
+///     decimation, see `angle_bounded_decimation()` \cgalParamNEnd
 ///   \cgalParamNBegin{remeshing_visitor} progress and cancellation, see `Default_remeshing_visitor`
 ///     (pass `std::ref(visitor)` to keep its state); it sees the fit's progress, so a `fit_visitor`
 ///     among the parameters is not used

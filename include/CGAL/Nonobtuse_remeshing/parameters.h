@@ -59,7 +59,9 @@ namespace internal_np {
   X(stop_after_t, stop_after)             /* pipeline: last stage to run */  \
   X(remeshing_visitor_t, remeshing_visitor) /* pipeline: progress, cancel */ \
   X(memory_budget_t, memory_budget)       /* bytes the initial mesh may use */ \
-  X(number_of_threads_t, number_of_threads) /* workers, 0: one per core */
+  X(number_of_threads_t, number_of_threads) /* workers, 0: one per core */ \
+  X(keep_topology_t, keep_topology)       /* pipeline: refine the grid */    \
+  X(max_resolution_t, max_resolution)     /* pipeline: refinement cap */
 
 #define CGAL_NONOBTUSE_DECLARE_TAG(TAG, NAME) enum TAG { NAME };
 CGAL_NONOBTUSE_TAGS(CGAL_NONOBTUSE_DECLARE_TAG)

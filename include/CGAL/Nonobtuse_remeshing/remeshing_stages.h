@@ -23,18 +23,20 @@ enum class Remeshing_stage
 {
   initial_mesh,  ///< nonobtuse Marching Cubes (chapter 4)
   valence,       ///< removal of bad-valence vertices and vertex splits (5.7)
-  fit            ///< deform-to-fit with constrained Laplacian smoothing (chapter 5)
+  fit,           ///< deform-to-fit with constrained Laplacian smoothing (chapter 5)
+  decimation     ///< angle-bounded decimation to the target vertex count (chapter 6), when over it
 };
 
 /// \ingroup PkgNonobtuseRemeshingRef
 /// The short name of `stage` in reports and on the command line: "init",
-/// "valence" or "fit".
+/// "valence", "fit" or "decimation".
 inline const char* stage_name(Remeshing_stage stage)
 {
   switch(stage) {
   case Remeshing_stage::initial_mesh: return "init";
   case Remeshing_stage::valence: return "valence";
   case Remeshing_stage::fit: return "fit";
+  case Remeshing_stage::decimation: return "decimation";
   }
   return "unknown";
 }
@@ -47,6 +49,7 @@ inline const char* stage_description(Remeshing_stage stage)
   case Remeshing_stage::initial_mesh: return "nonobtuse Marching Cubes, chapter 4";
   case Remeshing_stage::valence: return "bad-valence removal and vertex split, section 5.7";
   case Remeshing_stage::fit: return "deform-to-fit, chapter 5";
+  case Remeshing_stage::decimation: return "angle-bounded decimation, chapter 6";
   }
   return "unknown";
 }
@@ -56,9 +59,10 @@ inline const char* stage_description(Remeshing_stage stage)
 /// other name.
 inline Remeshing_stage stage_from_name(const std::string& name)
 {
-  for(Remeshing_stage stage : {Remeshing_stage::initial_mesh, Remeshing_stage::valence, Remeshing_stage::fit})
+  for(Remeshing_stage stage : {Remeshing_stage::initial_mesh, Remeshing_stage::valence, Remeshing_stage::fit,
+                                Remeshing_stage::decimation})
     if(name == stage_name(stage)) return stage;
-  throw Bad_parameter("unknown stage '" + name + "': one of init, valence, fit");
+  throw Bad_parameter("unknown stage '" + name + "': one of init, valence, fit, decimation");
 }
 
 /// \ingroup PkgNonobtuseRemeshingRef
@@ -68,22 +72,79 @@ struct Remeshing_progress
   Remeshing_stage stage = Remeshing_stage::initial_mesh;
   double fraction = -1.;  ///< of the stage done: 0 as it starts; -1 when it cannot be known (during the fit)
   const Deform_to_fit_statistics* fit = nullptr;  ///< during the fit, its statistics so far
+  const Angle_bounded_decimation_statistics* decimation = nullptr;  ///< during the decimation, its statistics so far
 };
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// The topology of the initial mesh against the input's (beyond the thesis).
+/// Each output component belongs to the input component nearest to it. An
+/// input component keeps its topology when exactly one output component
+/// belongs to it, with its number of border cycles and its Euler
+/// characteristic. Input components that cross themselves or each other are
+/// compared as one group by components and border cycles only: the output is
+/// the surface of their union, whose genus may legitimately differ. The
+/// input is the mesh the function received, less its zero-area faces.
+struct Topology_comparison
+{
+  bool compared = false;  ///< false when the initial mesh was not built
+  bool matches = false;   ///< no group differs
+  std::size_t input_components = 0, input_border_cycles = 0;
+  long long input_euler_characteristic = 0;
+  std::size_t output_components = 0, output_border_cycles = 0;
+  long long output_euler_characteristic = 0;
+  std::size_t input_groups = 0;     ///< input components, those that cross each other counted as one
+  std::size_t crossing_groups = 0;  ///< groups that cross themselves or each other (Euler characteristic not compared)
+  std::size_t groups_differing = 0;
+  /// over the groups that differ: |components - 1| + |border cycles - the input's| + |Euler
+  /// characteristic - the input's| / 2 (a part cut off counts 2, a handle closed 1)
+  std::size_t mismatch = 0;
+  std::string difference;  ///< the first difference in words; empty when the topology matches
+  double seconds = 0.;     ///< spent comparing, over all the initial meshes built
+};
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Calls `f(name, value)` for every field of `t`, as the `for_each_field()`
+/// of statistics.h; `difference` is a string.
+template <typename F>
+void for_each_field(const Topology_comparison& t, F&& f)
+{
+  f("compared", t.compared);
+  f("matches", t.matches);
+  f("input_components", t.input_components);
+  f("input_border_cycles", t.input_border_cycles);
+  f("input_euler_characteristic", t.input_euler_characteristic);
+  f("output_components", t.output_components);
+  f("output_border_cycles", t.output_border_cycles);
+  f("output_euler_characteristic", t.output_euler_characteristic);
+  f("input_groups", t.input_groups);
+  f("crossing_groups", t.crossing_groups);
+  f("groups_differing", t.groups_differing);
+  f("mismatch", t.mismatch);
+  f("difference", t.difference);
+  f("seconds", t.seconds);
+}
 
 /// \ingroup PkgNonobtuseRemeshingRef
 /// Statistics of `nonobtuse_remesh()`: those of each stage that ran (the
 /// thesis's Tables 4.1, 7.1 and 7.2) and the resolution used.
 struct Nonobtuse_remeshing_statistics
 {
-  int resolution = 0;                      ///< cubes along the longest side, given or chosen
+  int resolution = 0;                      ///< cubes along the longest side of the initial mesh kept
   std::size_t target_vertices = 0;         ///< 0 unless the resolution was chosen for a vertex count
   int trial_resolution = 0;                ///< with a target: the first resolution tried if it was redone, else 0
+  int budget_resolution = 0;               ///< the resolution given, or chosen for the target, before any refinement
+  bool keep_topology = false;              ///< finer initial meshes were allowed until the topology matched
+  int max_resolution = 0;                  ///< the cap of that refinement
+  int refinements = 0;                     ///< finer initial meshes built for the topology
+  Topology_comparison topology;            ///< of the initial mesh kept
   std::size_t degenerate_faces_removed = 0; ///< zero-area input faces removed from a copy of the input first
   Marching_cubes_result initial_mesh;      ///< Table 4.1 (its face maps are left empty)
   bool valence_run = false;
   Bad_valence_removal_statistics valence;  ///< Table 7.1
   bool fit_run = false;
   Deform_to_fit_statistics fit;            ///< Table 7.2
+  bool decimation_run = false;
+  Angle_bounded_decimation_statistics decimation;  ///< from the fitted mesh to the target vertex count
   bool cancelled = false;                  ///< the visitor stopped the pipeline
   /// connected components of the input (beyond the thesis)
   std::size_t input_components = 0;

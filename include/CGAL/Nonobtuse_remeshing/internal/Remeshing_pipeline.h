@@ -1,17 +1,22 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The pipeline behind nonobtuse_remesh(): the initial mesh (thesis, chapter
-// 4), the removal of bad-valence vertices (5.7) and deform-to-fit (chapter
-// 5) on meshes whose points are in their internal point maps, with one
-// visitor for progress and cancellation across the stages.
+// 4), refined until its topology is the input's (beyond the thesis), the
+// removal of bad-valence vertices (5.7), deform-to-fit (chapter 5) and, when
+// the mesh is over the target vertex count, angle-bounded decimation to it
+// (chapter 6), on meshes whose points are in their internal point maps, with
+// one visitor for progress and cancellation across the stages.
 
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_REMESHING_PIPELINE_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_REMESHING_PIPELINE_H
 
 #include <CGAL/Nonobtuse_remeshing/deform_to_fit.h>
 #include <CGAL/Nonobtuse_remeshing/exceptions.h>
+#include <CGAL/Nonobtuse_remeshing/internal/Angle_bounded_decimation.h>
 #include <CGAL/Nonobtuse_remeshing/internal/mesh_helpers.h>
 #include <CGAL/Nonobtuse_remeshing/internal/missing_components.h>
+#include <CGAL/Nonobtuse_remeshing/internal/parallel.h>
+#include <CGAL/Nonobtuse_remeshing/internal/topology_comparison.h>
 #include <CGAL/Nonobtuse_remeshing/nonobtuse_marching_cubes.h>
 #include <CGAL/Nonobtuse_remeshing/parameters.h>
 #include <CGAL/Nonobtuse_remeshing/remeshing_stages.h>
@@ -35,6 +40,22 @@ namespace CGAL {
 namespace Nonobtuse_remeshing {
 namespace internal {
 
+// Each refinement of the initial mesh multiplies the resolution by this: 1.56
+// times the vertices, so that the first resolution that keeps the topology
+// is found close to the one the budget gave.
+constexpr double refinement_factor = 1.25;
+
+inline void describe_progress(Remeshing_progress& p, const Deform_to_fit_statistics& s)
+{
+  p.stage = Remeshing_stage::fit;
+  p.fit = &s;
+}
+inline void describe_progress(Remeshing_progress& p, const Angle_bounded_decimation_statistics& s)
+{
+  p.stage = Remeshing_stage::decimation;
+  p.decimation = &s;
+}
+
 // The pipeline of nonobtuse_remesh() on meshes whose points are in their
 // internal point maps (any vertex_point_map in `np` is not used).
 template <typename TriangleMesh, typename NamedParameters>
@@ -53,7 +74,8 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
     throw Bad_input("nonobtuse_remesh: the input must be a non-empty triangle mesh");
 
   Nonobtuse_remeshing_statistics stats;
-  const Remeshing_stage last = choose_parameter(get_parameter(np, internal_np::stop_after), Remeshing_stage::fit);
+  const Remeshing_stage last =
+      choose_parameter(get_parameter(np, internal_np::stop_after), Remeshing_stage::decimation);
   const bool valence_cleanup = choose_parameter(get_parameter(np, internal_np::valence_cleanup), true);
   const int k = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), 2);
   if(last == Remeshing_stage::valence && !valence_cleanup)
@@ -65,6 +87,11 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
                                                : choose_parameter(get_parameter(np, internal_np::resolution), 100);
   if(stats.resolution < 1 || stats.resolution > 1024)
     throw Bad_parameter("the resolution must lie in [1, 1024]");
+  stats.keep_topology = choose_parameter(get_parameter(np, internal_np::keep_topology), stats.target_vertices > 0);
+  const int max_resolution = choose_parameter(get_parameter(np, internal_np::max_resolution), 0);
+  if(max_resolution < 0 || max_resolution > 1024)
+    throw Bad_parameter("the maximum resolution must lie in [1, 1024] (0: twice the resolution)");
+  const internal::Angle_bounded_decimation_options decimation_options = internal::decimation_options(np);
   const Sign_source signs = choose_parameter(get_parameter(np, internal_np::sign_source), Sign_source::automatic);
   const double budget = choose_parameter(get_parameter(np, internal_np::memory_budget), default_memory_budget);
   if(!(budget > 0.)) throw Bad_parameter("the memory budget must be positive");
@@ -80,6 +107,12 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
     if(!visitor.keep_going(p)) stats.cancelled = true;
     return !stats.cancelled;
   };
+  // The fit's and the decimation's progress, relayed to the visitor.
+  auto relay = keep_going_relay([&visitor](const auto& s) {
+    Remeshing_progress p;
+    describe_progress(p, s);
+    return visitor.keep_going(p);
+  });
   const auto finish = [&]() {
     if(num_faces(output) > 0) {
       const internal::Component_accounting accounting =
@@ -145,11 +178,47 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
         }
       }
     }
-    stats.initial_mesh.patch_faces.clear();
-    stats.initial_mesh.face_patch.clear();
     if(num_faces(output) == 0)
       throw Bad_input("the initial mesh is empty: the input is too small or too thin for resolution " +
                                   std::to_string(stats.resolution));
+
+    // Beyond the thesis: the topology of the initial mesh against the
+    // input's, and finer grids while it differs (parts thinner than a cube
+    // cut off, holes opened), up to the cap; the mesh kept is the first that
+    // matches, else the one with the smallest mismatch (the coarsest among
+    // those).
+    stats.budget_resolution = stats.resolution;
+    Thread_pool pool(threads);
+    Topology_comparator<TriangleMesh> topology(*surface, pool);
+    stats.topology = topology.compare(output);
+    stats.max_resolution = max_resolution > 0 ? max_resolution : (std::min)(1024, 2 * stats.resolution);
+    double comparing = stats.topology.seconds, building = stats.initial_mesh.seconds;
+    for(int resolution = stats.resolution; stats.keep_topology && !stats.topology.matches;) {
+      resolution = (std::min)(stats.max_resolution, int(std::ceil(refinement_factor * resolution)));
+      if(resolution <= stats.resolution || !proceed(Remeshing_stage::initial_mesh, 0.)) break;
+      TriangleMesh finer;
+      Marching_cubes_result r;
+      try {
+        r = build(resolution, finer);
+      } catch(const Memory_budget_exceeded&) {
+        break;  // the mesh kept so far stands
+      }
+      ++stats.refinements;
+      building += r.seconds;
+      Topology_comparison t = topology.compare(finer);
+      comparing += t.seconds;
+      if(t.mismatch < stats.topology.mismatch) {
+        stats.initial_mesh = std::move(r);
+        stats.resolution = resolution;
+        stats.topology = std::move(t);
+        output = std::move(finer);
+      }
+      if(stats.topology.matches || resolution == stats.max_resolution) break;
+    }
+    stats.initial_mesh.seconds = building;
+    stats.topology.seconds = comparing;
+    stats.initial_mesh.patch_faces.clear();
+    stats.initial_mesh.face_patch.clear();
     visitor.stage_finished(Remeshing_stage::initial_mesh, seconds_since(stage_start));
     if(last == Remeshing_stage::initial_mesh) return finish();
 
@@ -173,18 +242,31 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
     if(!proceed(Remeshing_stage::fit, 0.)) return finish();
     visitor.stage_started(Remeshing_stage::fit);
     stage_start = Clock::now();
-    auto relay = keep_going_relay([&visitor](const Deform_to_fit_statistics& s) {
-      Remeshing_progress p;
-      p.stage = Remeshing_stage::fit;
-      p.fit = &s;
-      return visitor.keep_going(p);
-    });
     stats.fit = deform_to_fit(output, *surface,
                               parameters::combine(np, parameters::fit_visitor(std::ref(relay)),
                                                   CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, output))));
     stats.fit_run = true;
     if(stats.fit.cancelled) stats.cancelled = true;
     visitor.stage_finished(Remeshing_stage::fit, seconds_since(stage_start));
+    if(last == Remeshing_stage::fit || stats.cancelled) return finish();
+
+    // Chapter 6: a mesh over the target (refined for its topology) is
+    // decimated to it, with the relaxation fitting it to the input; the
+    // collapses keep the topology and the certification.
+    const bool over_target =
+        stats.target_vertices > 0 && double(vertices(output).size()) > 1.1 * double(stats.target_vertices);
+    if(!over_target || !proceed(Remeshing_stage::decimation, 0.)) return finish();
+    visitor.stage_started(Remeshing_stage::decimation);
+    stage_start = Clock::now();
+    const auto points = get(CGAL::vertex_point, output);
+    Angle_bounded_decimation<TriangleMesh, std::remove_const_t<decltype(points)>, decltype(relay)>
+        decimation(output, points, decimation_options, certified_mesh_diagonal(output, points), relay);
+    stats.decimation = decimation.run({stats.target_vertices}, *surface, get(CGAL::vertex_point, *surface),
+                                      [](std::size_t, bool, const Angle_bounded_decimation_statistics&) {});
+    internal::collect_garbage_of(output, 0);
+    stats.decimation_run = true;
+    if(stats.decimation.stop_reason == Decimation_stop_reason::cancelled) stats.cancelled = true;
+    visitor.stage_finished(Remeshing_stage::decimation, seconds_since(stage_start));
     return finish();
   } catch(...) {
     clear(output);

@@ -60,10 +60,12 @@ namespace CGAL {
 namespace Nonobtuse_remeshing {
 namespace internal {
 
-/// Per input face (in the order of `faces(mesh)`), whether it intersects
-/// another face (CGAL's exact test, on the pool's cores with oneTBB).
+/// The pairs of input faces that intersect (CGAL's exact test, on the pool's
+/// cores with oneTBB), as indices in the order of `faces(mesh)`, sorted so
+/// that they do not depend on the number of threads.
 template <typename TriangleMesh, typename VertexPointMap>
-std::vector<bool> crossing_faces(const TriangleMesh& mesh, VertexPointMap points, const Thread_pool& pool)
+std::vector<std::pair<std::size_t, std::size_t> > crossing_face_pairs(const TriangleMesh& mesh,
+                                                                     VertexPointMap points, const Thread_pool& pool)
 {
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   const auto np = CGAL::parameters::vertex_point_map(epick_points(points)).geom_traits(Epick());
@@ -75,11 +77,25 @@ std::vector<bool> crossing_faces(const TriangleMesh& mesh, VertexPointMap points
 #endif
     Polygon_mesh_processing::self_intersections(faces(mesh), mesh, std::back_inserter(pairs), np);
   (void)pool;
-  std::vector<bool> crossing(faces(mesh).size(), false);
-  if(pairs.empty()) return crossing;
+  std::vector<std::pair<std::size_t, std::size_t> > result;
+  if(pairs.empty()) return result;
   std::unordered_map<face_descriptor, std::size_t> index;
   for(face_descriptor f : faces(mesh)) index.emplace(f, index.size());
-  for(const auto& pair : pairs) crossing[index.at(pair.first)] = crossing[index.at(pair.second)] = true;
+  for(const auto& pair : pairs) {
+    const std::size_t a = index.at(pair.first), b = index.at(pair.second);
+    result.emplace_back((std::min)(a, b), (std::max)(a, b));
+  }
+  std::sort(result.begin(), result.end());
+  return result;
+}
+
+/// Per input face (in the order of `faces(mesh)`), whether it intersects
+/// another face.
+template <typename TriangleMesh, typename VertexPointMap>
+std::vector<bool> crossing_faces(const TriangleMesh& mesh, VertexPointMap points, const Thread_pool& pool)
+{
+  std::vector<bool> crossing(faces(mesh).size(), false);
+  for(const auto& pair : crossing_face_pairs(mesh, points, pool)) crossing[pair.first] = crossing[pair.second] = true;
   return crossing;
 }
 
