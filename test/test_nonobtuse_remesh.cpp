@@ -99,7 +99,7 @@ TEST(NonobtuseRemesh, TargetVertices)
     Mesh output;
     const auto s = NR::nonobtuse_remesh(
         input, output,
-        NR::parameters::combine(NR::parameters::target_vertices(std::size_t(3000)),
+        NR::parameters::combine(NR::parameters::target_vertices(std::size_t(3000)), NR::parameters::oversampling(1.),
                                 NR::parameters::stop_after(NR::Remeshing_stage::valence)));
     const double ratio = double(vertices(output).size()) / 3000.;
     EXPECT_GT(ratio, 0.85) << name;
@@ -239,6 +239,20 @@ TEST(NonobtuseRemesh, TargetVerticesKeepsTheTopology)
   EXPECT_EQ(q.connected_components, in.connected_components);
   EXPECT_EQ(q.border_cycles, in.border_cycles);
   EXPECT_EQ(q.euler_characteristic, in.euler_characteristic);
+
+  // oversampled: built for twice the target, fitted, decimated to it
+  const Mesh pig = nonobtuse_test::load("pig.off");
+  const auto o = NR::nonobtuse_remesh(pig, output,
+                                      NR::parameters::combine(NR::parameters::target_vertices(std::size_t(3000)),
+                                                              NR::parameters::oversampling(2.)));
+  EXPECT_TRUE(o.decimation_run);
+  EXPECT_GT(o.fit.vertices, 5000u);
+  const Mesh pig_file = nonobtuse_test::written_and_reread(output, "pig_3000.off");
+  EXPECT_NEAR(double(vertices(pig_file).size()), 3000., 300.);
+  EXPECT_TRUE(NR::certify_angle_bounds(pig_file).is_certified());
+  EXPECT_EQ(NR::quality_report(pig_file).border_cycles, 7u);
+  EXPECT_EQ(NR::quality_report(pig_file).euler_characteristic, NR::quality_report(pig).euler_characteristic);
+  EXPECT_THROW(NR::nonobtuse_remesh(pig, output, NR::parameters::oversampling(0.5)), NR::Bad_parameter);
 }
 
 // Bad parameters and inputs throw before any work and leave the output empty.

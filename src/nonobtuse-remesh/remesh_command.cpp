@@ -173,7 +173,7 @@ int remesh_command(int argc, char** argv)
   Decimation_settings decimation;
   int resolution = 100, drum_subdivisions = 2, quadric_rings = 0, smoothing_steps = 2, max_resolution = 0;
   long long target_vertices = 0;
-  double alpha = 0.5, fit_tolerance = 1e-4, max_seconds = 0., memory_limit = 4.;
+  double alpha = 0.5, fit_tolerance = 1e-4, max_seconds = 0., memory_limit = 4., oversampling = 1.;
   long long max_moves = 0;
   bool quiet = false;
   po::options_description options("options");
@@ -187,6 +187,10 @@ int remesh_command(int argc, char** argv)
     ("target-vertices,V", po::value<long long>(&target_vertices),
      "instead of --resolution: about this many output vertices (the resolution is chosen from the input's "
      "area and bounding box)")
+    ("oversampling", po::value<double>(&oversampling)->default_value(1.),
+     "with --target-vertices: build the initial mesh for this many times V vertices, fit it, then decimate "
+     "it to V, which keeps the vertices where the surface needs them (2 fits curved inputs closer; CAD "
+     "parts' regular grids decimate badly); in [1, 16]")
     ("topology", po::value<std::string>(&topology),
      "keep: while the initial mesh's topology differs from the input's (per input component: components, "
      "borders, Euler characteristic), rebuild it at 1.25 times the resolution, up to --max-resolution, then "
@@ -286,6 +290,7 @@ int remesh_command(int argc, char** argv)
     if(!ratios.empty()) decimation.check_parameters(ratios);
     if(vm.count("topology") && topology != "keep" && topology != "ignore")
       throw std::invalid_argument("--topology must be keep or ignore (got '" + topology + "')");
+    if(!(oversampling >= 1. && oversampling <= 16.)) throw std::invalid_argument("--oversampling must lie in [1, 16]");
     if(vm.count("max-resolution") && (max_resolution < 1 || max_resolution > 1024))
       throw std::invalid_argument("--max-resolution must lie in [1, 1024]");
     const bool keep_topology = vm.count("topology") ? topology == "keep" : vm.count("target-vertices") > 0;
@@ -317,6 +322,7 @@ int remesh_command(int argc, char** argv)
                                           : NR::parameters::target_vertices(std::size_t(0)),
               NR::parameters::resolution(resolution), NR::parameters::sign_source(source),
               NR::parameters::keep_topology(keep_topology), NR::parameters::max_resolution(max_resolution),
+              NR::parameters::oversampling(oversampling),
               NR::parameters::stop_after(last), NR::parameters::valence_cleanup(valence_cleanup),
               NR::parameters::vertex_split(vm.count("no-vertex-split") == 0),
               NR::parameters::alpha(alpha), NR::parameters::drum_subdivisions(drum_subdivisions),
@@ -336,12 +342,15 @@ int remesh_command(int argc, char** argv)
     } catch(const NR::Bad_input& e) {
       throw NR::Bad_input("'" + input_path + "': " + e.what());
     }
-    if(stats.trial_resolution > 0)
-      std::cout << "resolution " << stats.resolution << " for about " << stats.target_vertices
-                << " vertices (resolution " << stats.trial_resolution << " from the area gave "
-                << "a mesh too far from the target)\n";
-    else if(stats.target_vertices > 0)
-      std::cout << "resolution " << stats.resolution << " for about " << stats.target_vertices << " vertices\n";
+    if(stats.target_vertices > 0) {
+      std::cout << "resolution " << stats.budget_resolution << " for about ";
+      if(stats.oversampling > 1.) std::cout << stats.oversampling << " x ";
+      std::cout << stats.target_vertices << " vertices";
+      if(stats.trial_resolution > 0)
+        std::cout << " (resolution " << stats.trial_resolution << " from the area gave a mesh too far from it)";
+      if(stats.oversampling > 1.) std::cout << ", decimated to " << stats.target_vertices << " after the fit";
+      std::cout << "\n";
+    }
     if(stats.degenerate_faces_removed > 0)
       std::cout << "note: " << stats.degenerate_faces_removed
                 << " zero-area input face(s) removed first (CGAL's remove_degenerate_faces, on a copy)\n";
@@ -425,6 +434,7 @@ int remesh_command(int argc, char** argv)
       if(stats.target_vertices > 0) {
         j["target_vertices"] = stats.target_vertices;
         if(stats.trial_resolution > 0) j["trial_resolution"] = stats.trial_resolution;
+        j["oversampling"] = stats.oversampling;
       }
       j["certification"] = {{"written_file", output_path},
                             {"certified", report.certified},

@@ -32,9 +32,11 @@ namespace Nonobtuse_remeshing {
 /// With `keep_topology`, while it differs (parts thinner than a cube cut off,
 /// holes opened), the initial mesh is rebuilt at 1.25 times the resolution,
 /// up to `max_resolution`; the first mesh that matches is kept, else the one
-/// with the fewest differences. With a `target_vertices` count, a fitted mesh
-/// over it by more than 10% is then decimated to it (`angle_bounded_decimation()`,
-/// its relaxation fitting to `input`), which keeps the topology.
+/// with the fewest differences. With a `target_vertices` count V, the
+/// initial mesh is built for `oversampling` times V vertices and the fitted
+/// mesh, over V by more than 10%, is decimated to V (`angle_bounded_decimation()`,
+/// its relaxation fitting to `input`): the collapses keep the vertices where
+/// the surface needs them, and keep the topology.
 ///
 /// Each stage certifies every
 /// change it makes, so `output` is certified whenever this function
@@ -50,10 +52,14 @@ namespace Nonobtuse_remeshing {
 ///     default 100
 ///     \cgalParamType{`int`} \cgalParamNEnd
 ///   \cgalParamNBegin{target_vertices} about this many output vertices; when given and not 0, it
-///     replaces `resolution`. The resolution comes from `resolution_for_target_vertices()`; if the
-///     initial mesh misses the target by more than 10%, it is rebuilt once at the resolution scaled
-///     by the square root of the ratio (and the first one kept if that fails)
+///     replaces `resolution`. The resolution comes from `resolution_for_target_vertices()` for
+///     `oversampling` times the target; if the initial mesh misses that count by more than 10%, it
+///     is rebuilt once at the resolution scaled by the square root of the ratio (and the first one
+///     kept if that fails)
 ///     \cgalParamType{`std::size_t`} \cgalParamNEnd
+///   \cgalParamNBegin{oversampling} with `target_vertices`: the initial mesh is built for this many
+///     times the target, in [1, 16]; default 1 (2 fits curved inputs closer, see the manual)
+///     \cgalParamType{`double`} \cgalParamNEnd
 ///   \cgalParamNBegin{keep_topology} refine the initial mesh until its topology is the input's;
 ///     default true with a `target_vertices` count, false with a `resolution`
 ///     \cgalParamType{`bool`} \cgalParamNEnd

@@ -131,6 +131,7 @@ struct Nonobtuse_remeshing_statistics
 {
   int resolution = 0;                      ///< cubes along the longest side of the initial mesh kept
   std::size_t target_vertices = 0;         ///< 0 unless the resolution was chosen for a vertex count
+  double oversampling = 1.;                ///< with a target: the initial mesh was built for this many times its vertices
   int trial_resolution = 0;                ///< with a target: the first resolution tried if it was redone, else 0
   int budget_resolution = 0;               ///< the resolution given, or chosen for the target, before any refinement
   bool keep_topology = false;              ///< finer initial meshes were allowed until the topology matched

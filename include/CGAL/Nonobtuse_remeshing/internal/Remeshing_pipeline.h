@@ -40,6 +40,15 @@ namespace CGAL {
 namespace Nonobtuse_remeshing {
 namespace internal {
 
+// With a target vertex count, the initial mesh can be built for more
+// vertices, fitted, then decimated to the target, so that the decimation puts
+// the vertices where the surface needs them. Measured at 10,000 vertices on
+// CGAL's 17 sample meshes (see the manual), 2 lowers the Hausdorff distance
+// on curved inputs by up to half, but the regular right-angle grids of CAD
+// parts hardly decimate (cube-meshed 1.2% -> 1.9%; cylinder stops over the
+// target at its error ceiling), so the default builds for the target itself.
+constexpr double default_oversampling = 1.;
+
 // Each refinement of the initial mesh multiplies the resolution by this: 1.56
 // times the vertices, so that the first resolution that keeps the topology
 // is found close to the one the budget gave.
@@ -83,7 +92,12 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
   int rings = 0;
   internal::deform_to_fit_options(np, rings);  // the fit's parameters are checked before any work
   stats.target_vertices = choose_parameter(get_parameter(np, internal_np::target_vertices), std::size_t(0));
-  stats.resolution = stats.target_vertices > 0 ? resolution_for_target_vertices(input, stats.target_vertices)
+  stats.oversampling = choose_parameter(get_parameter(np, internal_np::oversampling), default_oversampling);
+  if(!(stats.oversampling >= 1. && stats.oversampling <= 16.))
+    throw Bad_parameter("the oversampling must lie in [1, 16]");
+  // with a target, the initial mesh is built for `oversampling` times its vertices
+  const std::size_t initial_vertices = std::size_t(std::llround(stats.oversampling * double(stats.target_vertices)));
+  stats.resolution = stats.target_vertices > 0 ? resolution_for_target_vertices(input, initial_vertices)
                                                : choose_parameter(get_parameter(np, internal_np::resolution), 100);
   if(stats.resolution < 1 || stats.resolution > 1024)
     throw Bad_parameter("the resolution must lie in [1, 1024]");
@@ -92,6 +106,8 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
   if(max_resolution < 0 || max_resolution > 1024)
     throw Bad_parameter("the maximum resolution must lie in [1, 1024] (0: twice the resolution)");
   const internal::Angle_bounded_decimation_options decimation_options = internal::decimation_options(np);
+  const bool has_max_error =
+      !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::max_error_t>::value;
   const Sign_source signs = choose_parameter(get_parameter(np, internal_np::sign_source), Sign_source::automatic);
   const double budget = choose_parameter(get_parameter(np, internal_np::memory_budget), default_memory_budget);
   if(!(budget > 0.)) throw Bad_parameter("the memory budget must be positive");
@@ -157,7 +173,7 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
     if(stats.target_vertices > 0) {
       // off by more than 10%: once more at the resolution scaled by the
       // square root of the miss, kept if it builds a mesh
-      const double ratio = double(stats.target_vertices) / double((std::max)(std::size_t(1), vertices(output).size()));
+      const double ratio = double(initial_vertices) / double((std::max)(std::size_t(1), vertices(output).size()));
       const int redone =
           int(std::lround((std::min)(1024., (std::max)(1., double(stats.resolution) * std::sqrt(ratio)))));
       if((ratio < 1. / 1.1 || ratio > 1.1) && redone != stats.resolution) {
@@ -250,17 +266,25 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
     visitor.stage_finished(Remeshing_stage::fit, seconds_since(stage_start));
     if(last == Remeshing_stage::fit || stats.cancelled) return finish();
 
-    // Chapter 6: a mesh over the target (refined for its topology) is
-    // decimated to it, with the relaxation fitting it to the input; the
-    // collapses keep the topology and the certification.
+    // Chapter 6: a mesh over the target (oversampled, refined for its
+    // topology) is decimated to it, with the relaxation fitting it to the
+    // input; the collapses keep the topology and the certification.
     const bool over_target =
         stats.target_vertices > 0 && double(vertices(output).size()) > 1.1 * double(stats.target_vertices);
     if(!over_target || !proceed(Remeshing_stage::decimation, 0.)) return finish();
     visitor.stage_started(Remeshing_stage::decimation);
     stage_start = Clock::now();
     const auto points = get(CGAL::vertex_point, output);
+    const double diagonal = certified_mesh_diagonal(output, points);
+    Angle_bounded_decimation_options o = decimation_options;
+    if(!has_max_error) {
+      // No collapse moves the surface by more than a cube of the grid the
+      // target alone gives: the error the pipeline makes without decimating.
+      const int coarse = resolution_for_target_vertices(*surface, stats.target_vertices);
+      o.max_error = stats.initial_mesh.cube_size * double(stats.resolution) / double(coarse) / diagonal;
+    }
     Angle_bounded_decimation<TriangleMesh, std::remove_const_t<decltype(points)>, decltype(relay)>
-        decimation(output, points, decimation_options, certified_mesh_diagonal(output, points), relay);
+        decimation(output, points, o, diagonal, relay);
     stats.decimation = decimation.run({stats.target_vertices}, *surface, get(CGAL::vertex_point, *surface),
                                       [](std::size_t, bool, const Angle_bounded_decimation_statistics&) {});
     internal::collect_garbage_of(output, 0);
