@@ -74,7 +74,8 @@ void stage_span(NR::Remeshing_stage stage, int& begin, int& end)
   switch(stage) {
   case NR::Remeshing_stage::initial_mesh: begin = 0; end = 100; return;
   case NR::Remeshing_stage::valence: begin = 100; end = 200; return;
-  case NR::Remeshing_stage::fit: begin = 200; end = 1000; return;
+  case NR::Remeshing_stage::fit: begin = 200; end = 800; return;
+  case NR::Remeshing_stage::decimation: begin = 800; end = 1000; return;  // only over the target
   }
   begin = 0; end = 1000;
 }
@@ -148,8 +149,14 @@ struct Remeshing_visitor
   {
     int begin, end;
     stage_span(p.stage, begin, end);
-    // The fit cannot tell how far it is: a busy bar then.
-    const int value = p.fraction >= 0. ? begin + int(std::lround(p.fraction * double(end - begin))) : -1;
+    // The fit cannot tell how far it is: a busy bar then; the decimation
+    // counts its collapses towards the target.
+    int value = p.fraction >= 0. ? begin + int(std::lround(p.fraction * double(end - begin))) : -1;
+    if(p.decimation != nullptr) {
+      const NR::Angle_bounded_decimation_statistics& s = *p.decimation;
+      const double todo = s.vertices_before > s.target_vertices ? double(s.vertices_before - s.target_vertices) : 1.;
+      value = begin + int(std::lround((std::min)(1., double(s.collapses) / todo) * double(end - begin)));
+    }
     QString label = QObject::tr("Nonobtuse remeshing: %1").arg(stage_label(p.stage));
     if(p.fit != nullptr)
       label += QObject::tr("\n%1: %2 moves, RMS distance %3 % of the diagonal")

@@ -10,7 +10,8 @@ A visitor given by value is copied and the copy is called, so its type must be c
 constructible; given as `std::ref(visitor)`, the visitor itself is called and keeps its state.
 
 The stages are those of `CGAL::Nonobtuse_remeshing::Remeshing_stage`, in their order; a stage
-that is not run (the valence stage with `valence_cleanup` false, the stages after `stop_after`)
+that is not run (the valence stage with `valence_cleanup` false, the stages after `stop_after`,
+the decimation when the fitted mesh is not over a `target_vertices` count by more than 10%)
 causes no call.
 
 \cgalHasModel{`CGAL::Nonobtuse_remeshing::Default_visitor`}
@@ -38,9 +39,12 @@ public:
 
   /*!
   Called before each stage starts, with `progress.stage` that stage, `progress.fraction` 0 and
-  `progress.fit` null; and during the fit, as a `DeformToFitVisitor` is, before each round of
-  vertex moves, with `progress.stage` `Remeshing_stage::fit`, `progress.fraction` -1 and
-  `progress.fit` pointing to the fit's statistics so far.
+  `progress.fit` and `progress.decimation` null; during the fit, as a `DeformToFitVisitor` is,
+  before each round of vertex moves, with `progress.stage` `Remeshing_stage::fit`,
+  `progress.fraction` -1 and `progress.fit` pointing to the fit's statistics so far; and during
+  the decimation (which runs only when the fitted mesh is over a `target_vertices` count), as a
+  `DecimationVisitor` is, with `progress.stage` `Remeshing_stage::decimation`, `progress.fraction`
+  -1 and `progress.decimation` pointing to the decimation's statistics so far.
 
   Returning `false` stops the pipeline there: the stages not yet started do not run, the returned
   statistics have `cancelled` set, and the output is certified, or empty if the initial mesh was
