@@ -319,7 +319,8 @@ TEST(Cli, TargetVerticesKeepsTheInputTopology)
   const auto j = nlohmann::json::parse(slurp(json));
   EXPECT_EQ(j["topology"]["matches"], false);
   EXPECT_EQ(j["topology"]["refinements"], 0);
-  EXPECT_EQ(topology_of(mesh).substr(0, 2), std::to_string(j["topology"]["output_components"].get<int>()) + " ");
+  const std::string found = topology_of(mesh);
+  EXPECT_EQ(found.substr(0, found.find(' ')), std::to_string(j["topology"]["output_components"].get<int>()));
   EXPECT_GT(j["topology"]["output_components"].get<int>(), 1);
   EXPECT_EQ(run("remesh " + data("hand.off") + " -o " + out + "2.off -V 100 --topology maybe").code, 2);
   EXPECT_EQ(run("remesh " + data("hand.off") + " -o " + out + "2.off -V 100 --max-resolution 0").code, 2);

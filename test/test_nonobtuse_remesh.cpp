@@ -33,7 +33,7 @@ bool certified_on_file(const Mesh& mesh, const std::string& name)
 struct Recording_visitor
 {
   std::vector<std::string> events;
-  std::size_t calls = 0, cancel_at = 0, fit_calls = 0;
+  std::size_t calls = 0, cancel_at = 0, fit_calls = 0, decimation_calls = 0;
   void stage_started(NR::Remeshing_stage s) { events.push_back("start " + std::to_string(int(s))); }
   void stage_finished(NR::Remeshing_stage s, double seconds)
   {
@@ -48,6 +48,7 @@ struct Recording_visitor
       ++fit_calls;
     } else if(p.decimation) {
       EXPECT_EQ(p.stage, NR::Remeshing_stage::decimation);
+      ++decimation_calls;
     } else {
       EXPECT_TRUE(p.fraction == 0. || p.fraction == 1.);
     }
@@ -197,7 +198,6 @@ TEST(NonobtuseRemesh, TopologyIsComparedPerInputComponent)
   EXPECT_GE(s.refinements, 1);
   EXPECT_EQ(s.budget_resolution, 47);
   EXPECT_GT(s.resolution, 47);
-  EXPECT_LE(s.resolution, s.max_resolution);
   EXPECT_EQ(s.max_resolution, 94);
   const Mesh reread = nonobtuse_test::written_and_reread(output, "refined_hand.off");
   const NR::Quality_report q = NR::quality_report(reread), in = NR::quality_report(hand);
@@ -210,6 +210,13 @@ TEST(NonobtuseRemesh, TopologyIsComparedPerInputComponent)
                                                    NR::parameters::max_resolution(47), init));
   EXPECT_FALSE(s.topology.matches);
   EXPECT_EQ(s.refinements, 0);
+  // a cap below the resolution: no refinement either
+  s = NR::nonobtuse_remesh(hand, output,
+                           NR::parameters::combine(NR::parameters::resolution(47), NR::parameters::keep_topology(true),
+                                                   NR::parameters::max_resolution(20), init));
+  EXPECT_EQ(s.refinements, 0);
+  EXPECT_EQ(s.resolution, 47);
+  EXPECT_EQ(s.max_resolution, 47);
   EXPECT_THROW(NR::nonobtuse_remesh(hand, output, NR::parameters::max_resolution(2000)), NR::Bad_parameter);
 }
 
@@ -232,6 +239,7 @@ TEST(NonobtuseRemesh, TargetVerticesKeepsTheTopology)
   ASSERT_TRUE(s.decimation_run);
   EXPECT_EQ(s.decimation.stop_reason, NR::Decimation_stop_reason::target_reached);
   EXPECT_EQ(visitor.events.back(), "end 3");
+  EXPECT_GT(visitor.decimation_calls, 0u);
   const Mesh reread = nonobtuse_test::written_and_reread(output, "hand_10000.off");
   EXPECT_NEAR(double(vertices(reread).size()), 10000., 1000.);
   EXPECT_TRUE(NR::certify_angle_bounds(reread).is_certified());

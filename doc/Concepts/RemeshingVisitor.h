@@ -38,7 +38,8 @@ public:
   void stage_finished(CGAL::Nonobtuse_remeshing::Remeshing_stage stage, double seconds);
 
   /*!
-  Called before each stage starts, with `progress.stage` that stage, `progress.fraction` 0 and
+  Called before each stage starts, and before each refinement of the initial mesh for its topology,
+  with `progress.stage` that stage, `progress.fraction` 0 and
   `progress.fit` and `progress.decimation` null; during the fit, as a `DeformToFitVisitor` is,
   before each round of vertex moves, with `progress.stage` `Remeshing_stage::fit`,
   `progress.fraction` -1 and `progress.fit` pointing to the fit's statistics so far; and during

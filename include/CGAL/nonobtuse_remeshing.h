@@ -5,7 +5,8 @@
 // exactly (after Li, "Nonobtuse meshes with guaranteed angle bounds").
 //
 // The package lives in namespace CGAL::Nonobtuse_remeshing. Stages available:
-//   nonobtuse_remesh()      the whole pipeline: the three stages below
+//   nonobtuse_remesh()      the whole pipeline: the stages below, the decimation
+//                           only down to a target vertex count
 //   nonobtuse_marching_cubes()  the initial mesh (thesis, chapter 4)
 //   remove_bad_valence_vertices()  bad valences out, by removal and split (5.7)
 //   deform_to_fit()         the fit with constrained smoothing (chapter 5)

@@ -76,7 +76,11 @@ void print_decimation_stage(std::ostream& out, const NR::Angle_bounded_decimatio
   print_fields(out, std::string("decimation (") + NR::stage_description(NR::Remeshing_stage::decimation) + ")", s);
   if(s.stop_reason != NR::Decimation_stop_reason::target_reached)
     out << "  note: the decimation stopped at " << s.vertices_after << " vertices, before the target "
-        << s.target_vertices << ": " << NR::stop_reason_name(s.stop_reason) << "; keeping the topology needs more\n";
+        << s.target_vertices << ": " << NR::stop_reason_name(s.stop_reason)
+        << (s.stop_reason == NR::Decimation_stop_reason::max_error
+                ? " (its ceiling: one cube of the grid the target alone gives)"
+                : s.stop_reason == NR::Decimation_stop_reason::cancelled ? "" : " (keeping the topology needs more)")
+        << "\n";
 }
 
 // The columns of the thesis's tables, under its names.
@@ -249,8 +253,11 @@ int remesh_command(int argc, char** argv)
                     "Remeshes INPUT into a mesh whose angles all lie in [30, 90] degrees, certified\n"
                     "exactly on the written file. Stages: init (nonobtuse Marching Cubes), valence\n"
                     "(removal of bad-valence vertices, vertex splits), fit (deform-to-fit with\n"
-                    "constrained Laplacian smoothing); then, with --lod, levels of detail by\n"
-                    "angle-bounded decimation, each certified on its written file.",
+                    "constrained Laplacian smoothing), decimation (with --target-vertices, down to\n"
+                    "V when the fitted mesh is over it: refined for the input's topology, or\n"
+                    "oversampled); then, with --lod, levels of detail by angle-bounded decimation,\n"
+                    "each certified on its written file. --max-error applies to the levels only;\n"
+                    "the decimation stage stops at one cube of the grid V alone gives.",
                     options, positional, argc, argv, vm, exit_code))
     return exit_code;
 
@@ -295,7 +302,7 @@ int remesh_command(int argc, char** argv)
       throw std::invalid_argument("--max-resolution must lie in [1, 1024]");
     const bool keep_topology = vm.count("topology") ? topology == "keep" : vm.count("target-vertices") > 0;
     if(!ratios.empty() && (last == NR::Remeshing_stage::initial_mesh || last == NR::Remeshing_stage::valence))
-      throw std::invalid_argument("--lod needs the whole pipeline (no --stop-after)");
+      throw std::invalid_argument("--lod needs the fit (--stop-after fit or decimation)");
     std::vector<Named_path> outputs{{"-o", output_path},
                                     {vm.count("json") ? "--json" : "--report", report_path},
                                     {"--angle-histogram", histogram_path}};
@@ -323,6 +330,10 @@ int remesh_command(int argc, char** argv)
               NR::parameters::resolution(resolution), NR::parameters::sign_source(source),
               NR::parameters::keep_topology(keep_topology), NR::parameters::max_resolution(max_resolution),
               NR::parameters::oversampling(oversampling),
+              NR::parameters::min_interior_valence(std::size_t(decimation.min_valence)),
+              NR::parameters::min_border_valence(std::size_t((std::max)(
+                  decimation.min_border_valence >= 0 ? decimation.min_border_valence : decimation.min_valence - 1, 0))),
+              NR::parameters::relaxation(decimation.relaxation),
               NR::parameters::stop_after(last), NR::parameters::valence_cleanup(valence_cleanup),
               NR::parameters::vertex_split(vm.count("no-vertex-split") == 0),
               NR::parameters::alpha(alpha), NR::parameters::drum_subdivisions(drum_subdivisions),
@@ -348,7 +359,6 @@ int remesh_command(int argc, char** argv)
       std::cout << stats.target_vertices << " vertices";
       if(stats.trial_resolution > 0)
         std::cout << " (resolution " << stats.trial_resolution << " from the area gave a mesh too far from it)";
-      if(stats.oversampling > 1.) std::cout << ", decimated to " << stats.target_vertices << " after the fit";
       std::cout << "\n";
     }
     if(stats.degenerate_faces_removed > 0)

@@ -64,7 +64,8 @@ namespace Nonobtuse_remeshing {
 ///     default true with a `target_vertices` count, false with a `resolution`
 ///     \cgalParamType{`bool`} \cgalParamNEnd
 ///   \cgalParamNBegin{max_resolution} the cap of that refinement, in [1, 1024]; default 0: twice
-///     the resolution given or chosen for the target (about 4 times the vertices)
+///     the resolution given or chosen for the target (about 4 times the vertices); a cap below the
+///     resolution means no refinement
 ///     \cgalParamType{`int`} \cgalParamNEnd
 ///   \cgalParamNBegin{sign_source} corner signs of the Marching Cubes; default `Sign_source::automatic`
 ///     \cgalParamType{`Sign_source`} \cgalParamNEnd
@@ -82,7 +83,10 @@ namespace Nonobtuse_remeshing {
 ///     attract_features, number_of_threads} see `deform_to_fit()` (the drum subdivisions serve the valence stage
 ///     too) \cgalParamNEnd
 ///   \cgalParamNBegin{min_interior_valence, min_border_valence, max_error, relaxation} of the
-///     decimation, see `angle_bounded_decimation()` \cgalParamNEnd
+///     decimation, see `angle_bounded_decimation()`, except that `max_error` defaults to one cube of
+///     the grid `resolution_for_target_vertices()` gives for the target (divided by the diagonal),
+///     so that no collapse moves the surface further than the pipeline's error without decimating
+///     \cgalParamNEnd
 ///   \cgalParamNBegin{remeshing_visitor} progress and cancellation, see `Default_remeshing_visitor`
 ///     (pass `std::ref(visitor)` to keep its state); it sees the fit's progress, so a `fit_visitor`
 ///     among the parameters is not used

@@ -96,7 +96,7 @@ struct Topology_comparison
   std::size_t crossing_groups = 0;  ///< groups that cross themselves or each other (Euler characteristic not compared)
   std::size_t groups_differing = 0;
   /// over the groups that differ: |components - 1| + |border cycles - the input's| + |Euler
-  /// characteristic - the input's| / 2 (a part cut off counts 2, a handle closed 1)
+  /// characteristic - the input's| / 2 rounded up (a part cut off counts 2, a handle closed 1)
   std::size_t mismatch = 0;
   std::string difference;  ///< the first difference in words; empty when the topology matches
   double seconds = 0.;     ///< spent comparing, over all the initial meshes built

@@ -204,39 +204,44 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
     // matches, else the one with the smallest mismatch (the coarsest among
     // those).
     stats.budget_resolution = stats.resolution;
-    Thread_pool pool(threads);
-    Topology_comparator<TriangleMesh> topology(*surface, pool);
-    stats.topology = topology.compare(output);
-    stats.max_resolution = max_resolution > 0 ? max_resolution : (std::min)(1024, 2 * stats.resolution);
-    double comparing = stats.topology.seconds, building = stats.initial_mesh.seconds;
-    for(int resolution = stats.resolution; stats.keep_topology && !stats.topology.matches;) {
-      resolution = (std::min)(stats.max_resolution, int(std::ceil(refinement_factor * resolution)));
-      if(resolution <= stats.resolution || !proceed(Remeshing_stage::initial_mesh, 0.)) break;
-      TriangleMesh finer;
-      Marching_cubes_result r;
-      try {
-        r = build(resolution, finer);
-      } catch(const Memory_budget_exceeded&) {
-        break;  // the mesh kept so far stands
+    double comparing = 0., building = stats.initial_mesh.seconds;
+    {
+      Thread_pool pool(threads);
+      Topology_comparator<TriangleMesh> topology(*surface, pool);
+      stats.topology = topology.compare(output);
+      comparing = stats.topology.seconds;
+      if(stats.keep_topology)  // a cap below the resolution: no refinement
+        stats.max_resolution =
+            (std::max)(stats.resolution, max_resolution > 0 ? max_resolution : (std::min)(1024, 2 * stats.resolution));
+      for(int resolution = stats.resolution; stats.keep_topology && !stats.topology.matches;) {
+        resolution = (std::min)(stats.max_resolution, int(std::ceil(refinement_factor * resolution)));
+        if(resolution <= stats.resolution || !proceed(Remeshing_stage::initial_mesh, 0.)) break;
+        TriangleMesh finer;
+        Marching_cubes_result r;
+        try {
+          r = build(resolution, finer);
+        } catch(const Bad_input&) {
+          break;  // over the memory budget, or a grid too fine for the input: the mesh kept so far stands
+        }
+        ++stats.refinements;
+        building += r.seconds;
+        Topology_comparison t = topology.compare(finer);
+        comparing += t.seconds;
+        if(t.matches || t.mismatch < stats.topology.mismatch) {
+          stats.initial_mesh = std::move(r);
+          stats.resolution = resolution;
+          stats.topology = std::move(t);
+          output = std::move(finer);
+        }
+        if(stats.topology.matches || resolution == stats.max_resolution) break;
       }
-      ++stats.refinements;
-      building += r.seconds;
-      Topology_comparison t = topology.compare(finer);
-      comparing += t.seconds;
-      if(t.mismatch < stats.topology.mismatch) {
-        stats.initial_mesh = std::move(r);
-        stats.resolution = resolution;
-        stats.topology = std::move(t);
-        output = std::move(finer);
-      }
-      if(stats.topology.matches || resolution == stats.max_resolution) break;
     }
     stats.initial_mesh.seconds = building;
     stats.topology.seconds = comparing;
     stats.initial_mesh.patch_faces.clear();
     stats.initial_mesh.face_patch.clear();
     visitor.stage_finished(Remeshing_stage::initial_mesh, seconds_since(stage_start));
-    if(last == Remeshing_stage::initial_mesh) return finish();
+    if(last == Remeshing_stage::initial_mesh || stats.cancelled) return finish();
 
     // Section 5.7: bad valences out.
     if(valence_cleanup) {
@@ -280,7 +285,7 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
     if(!has_max_error) {
       // No collapse moves the surface by more than a cube of the grid the
       // target alone gives: the error the pipeline makes without decimating.
-      const int coarse = resolution_for_target_vertices(*surface, stats.target_vertices);
+      const int coarse = resolution_for_target_vertices(input, stats.target_vertices);
       o.max_error = stats.initial_mesh.cube_size * double(stats.resolution) / double(coarse) / diagonal;
     }
     Angle_bounded_decimation<TriangleMesh, std::remove_const_t<decltype(points)>, decltype(relay)>
