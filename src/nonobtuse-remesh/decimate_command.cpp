@@ -42,12 +42,11 @@ struct Decimation_progress
 
 auto decimation_parameters(const Decimation_settings& settings, Decimation_progress& progress)
 {
-  const int border = settings.min_border_valence >= 0 ? settings.min_border_valence : settings.min_valence - 1;
   return NR::parameters::combine(
       NR::parameters::max_error(settings.max_error_given ? settings.max_error_percent / 100.
                                                          : std::numeric_limits<double>::infinity()),
       NR::parameters::min_interior_valence(std::size_t(settings.min_valence)),
-      NR::parameters::min_border_valence(std::size_t((std::max)(border, 0))),
+      NR::parameters::min_border_valence(settings.border_valence()),
       NR::parameters::relaxation(settings.relaxation),
       NR::parameters::drum_subdivisions(settings.drum_subdivisions),
       NR::parameters::number_of_threads(settings.threads),
@@ -55,6 +54,11 @@ auto decimation_parameters(const Decimation_settings& settings, Decimation_progr
 }
 
 } // namespace
+
+std::size_t Decimation_settings::border_valence() const
+{
+  return std::size_t((std::max)(min_border_valence >= 0 ? min_border_valence : min_valence - 1, 0));
+}
 
 void Decimation_settings::add_options(po::options_description& options)
 {

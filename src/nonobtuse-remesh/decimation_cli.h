@@ -31,6 +31,8 @@ struct Decimation_settings
   bool quiet = false;
   std::string progress_prefix;    // e.g. "[4/4] " when a stage of remesh
 
+  // The border valence floor: --min-border-valence, or min_valence - 1 (at least 0).
+  std::size_t border_valence() const;
   // --max-error, --min-valence, --min-border-valence, --no-relaxation
   void add_options(po::options_description& options);
   // Reads the switches.

@@ -173,7 +173,7 @@ struct Pipeline_progress
 int remesh_command(int argc, char** argv)
 {
   std::string input_path, output_path, report_path, stop_after = "decimation", signs = "patches", lod, histogram_path,
-      coloring_name, topology = "keep";
+      coloring_name, topology;
   Decimation_settings decimation;
   int resolution = 100, drum_subdivisions = 2, quadric_rings = 0, smoothing_steps = 2, max_resolution = 0;
   long long target_vertices = 0;
@@ -331,8 +331,7 @@ int remesh_command(int argc, char** argv)
               NR::parameters::keep_topology(keep_topology), NR::parameters::max_resolution(max_resolution),
               NR::parameters::oversampling(oversampling),
               NR::parameters::min_interior_valence(std::size_t(decimation.min_valence)),
-              NR::parameters::min_border_valence(std::size_t((std::max)(
-                  decimation.min_border_valence >= 0 ? decimation.min_border_valence : decimation.min_valence - 1, 0))),
+              NR::parameters::min_border_valence(decimation.border_valence()),
               NR::parameters::relaxation(decimation.relaxation),
               NR::parameters::stop_after(last), NR::parameters::valence_cleanup(valence_cleanup),
               NR::parameters::vertex_split(vm.count("no-vertex-split") == 0),

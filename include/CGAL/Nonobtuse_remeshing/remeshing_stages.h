@@ -99,7 +99,7 @@ struct Topology_comparison
   /// characteristic - the input's| / 2 rounded up (a part cut off counts 2, a handle closed 1)
   std::size_t mismatch = 0;
   std::string difference;  ///< the first difference in words; empty when the topology matches
-  double seconds = 0.;     ///< spent comparing, over all the initial meshes built
+  double seconds = 0.;     ///< spent comparing, over all the initial meshes built, the input's setup included
 };
 
 /// \ingroup PkgNonobtuseRemeshingRef

@@ -207,9 +207,11 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
     double comparing = 0., building = stats.initial_mesh.seconds;
     {
       Thread_pool pool(threads);
-      Topology_comparator<TriangleMesh> topology(*surface, pool);
+      // the automatic signs tested the input for self-intersections already
+      Topology_comparator<TriangleMesh> topology(
+          *surface, pool, signs != Sign_source::automatic || stats.initial_mesh.self_intersecting_input);
       stats.topology = topology.compare(output);
-      comparing = stats.topology.seconds;
+      comparing = topology.setup_seconds() + stats.topology.seconds;
       if(stats.keep_topology)  // a cap below the resolution: no refinement
         stats.max_resolution =
             (std::max)(stats.resolution, max_resolution > 0 ? max_resolution : (std::min)(1024, 2 * stats.resolution));

@@ -111,7 +111,9 @@ inline std::string topology_text(const Part_topology& t, bool with_components, b
 
 // Compares meshes with `input` as the header says; the input's components,
 // groups and closest-triangle tree are built once. Points are read through
-// the internal point maps.
+// the internal point maps. `may_cross` false skips the self-intersection test
+// (the caller knows the input has none: the Marching Cubes' automatic signs
+// ran it already).
 template <typename TriangleMesh>
 class Topology_comparator
 {
@@ -121,17 +123,19 @@ class Topology_comparator
   using Tree = AABB_tree<AABB_traits<Epick, AABB_triangle_primitive<Epick, Triangle_iterator> > >;
 
 public:
-  Topology_comparator(const TriangleMesh& input, Thread_pool& pool)
+  Topology_comparator(const TriangleMesh& input, Thread_pool& pool, bool may_cross)
     : pool_(pool), in_(mesh_components(input)), group_(in_.parts.size()), crossing_(in_.parts.size(), false),
       expected_(in_.parts.size())
   {
+    const auto start = std::chrono::steady_clock::now();
     // groups of input components that cross themselves or each other
     std::iota(group_.begin(), group_.end(), std::size_t(0));
-    for(const auto& pair : crossing_face_pairs(input, get(CGAL::vertex_point, input), pool)) {
-      const std::size_t a = root(in_.face_component[pair.first]), b = root(in_.face_component[pair.second]);
-      group_[a] = b;
-      crossing_[b] = true;
-    }
+    if(may_cross)
+      for(const auto& pair : crossing_face_pairs(input, get(CGAL::vertex_point, input), pool)) {
+        const std::size_t a = root(in_.face_component[pair.first]), b = root(in_.face_component[pair.second]);
+        group_[a] = b;
+        crossing_[b] = true;
+      }
     for(std::size_t c = 0; c < in_.parts.size(); ++c) group_[c] = root(c);  // flat: read-only from here on
     for(std::size_t c = 0; c < in_.parts.size(); ++c) {
       Part_topology& e = expected_[group_[c]];
@@ -148,7 +152,11 @@ public:
     }
     tree_.insert(triangles_.cbegin(), triangles_.cend());
     tree_.accelerate_distance_queries();
+    setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
+
+  // Seconds the constructor took (the components are counted before it starts timing).
+  double setup_seconds() const { return setup_seconds_; }
 
   Topology_comparison compare(const TriangleMesh& output)
   {
@@ -234,6 +242,7 @@ private:
   std::vector<Part_topology> expected_;
   std::vector<Triangle> triangles_;
   Tree tree_;
+  double setup_seconds_ = 0.;
 };
 
 } // namespace internal
