@@ -273,6 +273,46 @@ TEST(Cli, SelfIntersectingInputComesOutClosed)
 // input's components, borders and Euler characteristic, the target within
 // 10%, certified. --topology ignore keeps the budget's grid and says what
 // differs; the open, self-crossing pig matches at once.
+// --max-distance: the bound is measured on the written file, claimed in the
+// output and the JSON report when it holds, and exit code 5 says it does not.
+TEST(Cli, MaxDistanceIsMeasuredOnTheWrittenFile)
+{
+  const std::string folder = scratch();
+  const std::string out = folder + "/elephant.off", json = folder + "/elephant.json";
+  const Outcome r = run("remesh " + data("elephant.off") + " -o " + out + " --max-distance 2 -q --report " + json);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("the bound 2% holds"), std::string::npos) << r.out;
+  Mesh mesh, input;
+  NR::read_triangle_mesh(out, mesh);
+  NR::read_triangle_mesh(data("elephant.off"), input);
+  EXPECT_TRUE(NR::certify_angle_bounds(mesh).is_certified());
+  const double diagonal = NR::internal::bbox_diagonal(input);
+  EXPECT_LE(CGAL::Polygon_mesh_processing::bounded_error_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(
+                mesh, input, 1e-4 * diagonal),
+            0.0201 * diagonal);
+  const auto j = nlohmann::json::parse(slurp(json));
+  EXPECT_EQ(j["max_distance"]["met"], true);
+  EXPECT_LE(j["max_distance"]["written_file_percent"].get<double>(), 2.);
+  EXPECT_EQ(j["decimation"]["vertices_after"], mesh.number_of_vertices());
+  EXPECT_LT(mesh.number_of_vertices(), j["fit"]["vertices"].get<std::size_t>());
+
+  const std::string rotor = folder + "/rotor.off";
+  const Outcome unmet =
+      run("remesh " + data("rotor.off") + " -o " + rotor + " --max-distance 5 --max-resolution 1 -q");
+  EXPECT_EQ(unmet.code, 5) << unmet.err;
+  EXPECT_NE(unmet.err.find("the distance bound 5% is not met"), std::string::npos) << unmet.err;
+  Mesh closest;
+  NR::read_triangle_mesh(rotor, closest);
+  EXPECT_TRUE(NR::certify_angle_bounds(closest).is_certified());
+
+  for(const std::string bad : {"--max-distance 0", "--max-distance 101", "--max-distance 1 -V 1000",
+                               "--max-distance 1 -N 50", "--max-distance 1 --stop-after init"}) {
+    const Outcome refused = run("remesh " + data("rotor.off") + " -o " + folder + "/refused.off " + bad);
+    EXPECT_EQ(refused.code, 2) << bad << ": " << refused.err;
+    EXPECT_FALSE(exists(folder + "/refused.off")) << bad;
+  }
+}
+
 TEST(Cli, TargetVerticesKeepsTheInputTopology)
 {
   const std::string folder = scratch();

@@ -263,6 +263,57 @@ TEST(NonobtuseRemesh, TargetVerticesKeepsTheTopology)
   EXPECT_THROW(NR::nonobtuse_remesh(pig, output, NR::parameters::oversampling(0.5)), NR::Bad_parameter);
 }
 
+// With a distance bound, the fitted mesh is decimated to the coarsest level
+// within it, and the bound holds on the written file as measured by CGAL's
+// bounded-error Hausdorff distance on its own; a bound the cap keeps out of
+// reach is reported as not met, the closest mesh certified all the same.
+TEST(NonobtuseRemesh, MaxDistanceHoldsOnTheWrittenFile)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  const Mesh elephant = nonobtuse_test::load("elephant.off");
+  Mesh output;
+  const auto s = NR::nonobtuse_remesh(elephant, output, NR::parameters::max_distance(0.02));
+  EXPECT_TRUE(s.keep_topology);
+  EXPECT_TRUE(s.distance.met);
+  EXPECT_DOUBLE_EQ(s.distance.max_distance, 0.02);
+  EXPECT_LE(s.distance.distance, 0.02);
+  EXPECT_LE(s.distance.fitted_distance, 0.02);
+  EXPECT_GE(s.distance.measurements, 2u);
+  ASSERT_TRUE(s.decimation_run);
+  EXPECT_LT(2 * vertices(output).size(), s.fit.vertices);  // the decimation removed more than half
+  const Mesh reread = nonobtuse_test::written_and_reread(output, "elephant_2pct.off");
+  EXPECT_TRUE(NR::certify_angle_bounds(reread).is_certified());
+  const double diagonal = NR::internal::bbox_diagonal(elephant), error = 1e-4 * diagonal;
+  EXPECT_LE(PMP::bounded_error_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(reread, elephant, error),
+            0.02 * diagonal + error);
+  const NR::Quality_report q = NR::quality_report(reread), in = NR::quality_report(elephant);
+  EXPECT_EQ(q.connected_components, in.connected_components);
+  EXPECT_EQ(q.border_cycles, in.border_cycles);
+  EXPECT_EQ(q.euler_characteristic, in.euler_characteristic);
+
+  // rotor's sharp edges keep its fitted mesh over 5% at the first grid, and
+  // the cap forbids a finer one
+  const Mesh rotor = nonobtuse_test::load("rotor.off");
+  const auto r = NR::nonobtuse_remesh(
+      rotor, output, NR::parameters::combine(NR::parameters::max_distance(0.05), NR::parameters::max_resolution(1)));
+  EXPECT_FALSE(r.distance.met);
+  EXPECT_GT(r.distance.distance, 0.05);
+  EXPECT_EQ(r.distance.refinements, 0);
+  EXPECT_FALSE(r.decimation_run);
+  EXPECT_TRUE(NR::certify_angle_bounds(nonobtuse_test::written_and_reread(output, "rotor_5pct.off")).is_certified());
+
+  EXPECT_THROW(NR::nonobtuse_remesh(rotor, output,
+                                    NR::parameters::combine(NR::parameters::max_distance(0.05),
+                                                            NR::parameters::target_vertices(std::size_t(1000)))),
+               NR::Bad_parameter);
+  EXPECT_THROW(NR::nonobtuse_remesh(rotor, output, NR::parameters::max_distance(1.5)), NR::Bad_parameter);
+  EXPECT_THROW(NR::nonobtuse_remesh(rotor, output,
+                                    NR::parameters::combine(NR::parameters::max_distance(0.05),
+                                                            NR::parameters::stop_after(NR::Remeshing_stage::valence))),
+               NR::Bad_parameter);
+  EXPECT_EQ(num_faces(output), 0u);
+}
+
 // Bad parameters and inputs throw before any work and leave the output empty.
 TEST(NonobtuseRemesh, Refusals)
 {

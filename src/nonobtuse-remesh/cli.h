@@ -32,7 +32,8 @@ enum Exit_code : int {
   certification_failed = 1,
   usage_error = 2,
   bad_input = 3,
-  internal_failure = 4
+  internal_failure = 4,
+  bound_not_met = 5
 };
 
 // Reads a triangle mesh with the package's checked reader; repairs it made

@@ -38,7 +38,8 @@ void print_help(std::ostream& out)
     out << "  " << c.name << std::string(10 - std::strlen(c.name), ' ') << c.summary << "\n";
   out << "\n'nonobtuse-remesh <command> --help' describes a command.\n"
          "exit codes: 0 success, 1 certification failed, 2 usage error,\n"
-         "            3 bad input (or unwritable output), 4 internal failure\n";
+         "            3 bad input (or unwritable output), 4 internal failure,\n"
+         "            5 the --max-distance bound not met (the closest mesh found is written)\n";
 }
 
 } // namespace

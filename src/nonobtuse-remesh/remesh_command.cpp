@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// nonobtuse-remesh remesh INPUT -o OUTPUT [--resolution N | --target-vertices V]
+// nonobtuse-remesh remesh INPUT -o OUTPUT [--resolution N | --target-vertices V | --max-distance PCT]
 //                  [--topology keep|ignore] [--max-resolution N]
 //                  [--stop-after init|valence|fit|decimation] [--signs auto|patches|winding-number|inside-test] [stage options]
 //                  [--lod R,R...] [--report FILE.json] [--angle-histogram FILE.svg]
@@ -71,10 +71,13 @@ void print_topology(std::ostream& out, const NR::Nonobtuse_remeshing_statistics&
         << "\n";
 }
 
-void print_decimation_stage(std::ostream& out, const NR::Angle_bounded_decimation_statistics& s)
+void print_decimation_stage(std::ostream& out, const NR::Angle_bounded_decimation_statistics& s, bool bounded)
 {
   print_fields(out, std::string("decimation (") + NR::stage_description(NR::Remeshing_stage::decimation) + ")", s);
-  if(s.stop_reason != NR::Decimation_stop_reason::target_reached)
+  if(bounded)
+    out << "  the coarsest level within the distance bound: " << s.vertices_after << " of "
+        << s.vertices_before << " vertices\n";
+  else if(s.stop_reason != NR::Decimation_stop_reason::target_reached)
     out << "  note: the decimation stopped at " << s.vertices_after << " vertices, before the target "
         << s.target_vertices << ": " << NR::stop_reason_name(s.stop_reason)
         << (s.stop_reason == NR::Decimation_stop_reason::max_error
@@ -177,7 +180,7 @@ int remesh_command(int argc, char** argv)
   Decimation_settings decimation;
   int resolution = 100, drum_subdivisions = 2, quadric_rings = 0, smoothing_steps = 2, max_resolution = 0;
   long long target_vertices = 0;
-  double alpha = 0.5, fit_tolerance = 1e-4, max_seconds = 0., memory_limit = 4., oversampling = 1.;
+  double alpha = 0.5, fit_tolerance = 1e-4, max_seconds = 0., memory_limit = 4., oversampling = 1., max_distance = 0.;
   long long max_moves = 0;
   bool quiet = false;
   po::options_description options("options");
@@ -191,6 +194,13 @@ int remesh_command(int argc, char** argv)
     ("target-vertices,V", po::value<long long>(&target_vertices),
      "instead of --resolution: about this many output vertices (the resolution is chosen from the input's "
      "area and bounding box)")
+    ("max-distance", po::value<double>(&max_distance),
+     "instead of --resolution or --target-vertices: the fewest vertices (the decimation's coarsest level, "
+     "levels 10% apart) whose symmetric Hausdorff distance to INPUT is at most PCT % of its bounding-box "
+     "diagonal. The grid's cube is 0.8 PCT, refined while the fitted mesh is over the bound (up to "
+     "--max-resolution). The distance is measured on the written file (CGAL's bounded-error Hausdorff "
+     "distance plus its error bound, PCT / 50); exit code 5 when the bound is not met, the closest mesh "
+     "found written")
     ("oversampling", po::value<double>(&oversampling)->default_value(1.),
      "with --target-vertices: build the initial mesh for this many times V vertices, fit it, then decimate "
      "it to V, which keeps the vertices where the surface needs them (2 fits curved inputs closer; CAD "
@@ -276,8 +286,12 @@ int remesh_command(int argc, char** argv)
                                                               {"inside-test", NR::Sign_source::inside_test}};
     if(sign_sources.count(signs) == 0)
       throw std::invalid_argument("--signs must be auto, patches, winding-number or inside-test (got '" + signs + "')");
-    if(vm.count("target-vertices") && !vm["resolution"].defaulted())
-      throw std::invalid_argument("give one of --resolution and --target-vertices");
+    if(int(vm.count("target-vertices")) + int(!vm["resolution"].defaulted()) + int(vm.count("max-distance")) > 1)
+      throw std::invalid_argument("give one of --resolution, --target-vertices and --max-distance");
+    if(vm.count("max-distance") && !(max_distance > 0. && max_distance <= 100.))
+      throw std::invalid_argument("--max-distance must lie in (0, 100], a percentage of the input's diagonal");
+    if(vm.count("max-distance") && (last == NR::Remeshing_stage::initial_mesh || last == NR::Remeshing_stage::valence))
+      throw std::invalid_argument("--max-distance needs the fit (--stop-after fit or decimation)");
     if(vm.count("target-vertices") && (target_vertices < 4 || target_vertices > 100000000))
       throw std::invalid_argument("--target-vertices must lie in [4, 100000000]");
     if(vm.count("report") && vm.count("json"))
@@ -300,7 +314,8 @@ int remesh_command(int argc, char** argv)
     if(!(oversampling >= 1. && oversampling <= 16.)) throw std::invalid_argument("--oversampling must lie in [1, 16]");
     if(vm.count("max-resolution") && (max_resolution < 1 || max_resolution > 1024))
       throw std::invalid_argument("--max-resolution must lie in [1, 1024]");
-    const bool keep_topology = vm.count("topology") ? topology == "keep" : vm.count("target-vertices") > 0;
+    const bool keep_topology =
+        vm.count("topology") ? topology == "keep" : vm.count("target-vertices") + vm.count("max-distance") > 0;
     if(!ratios.empty() && (last == NR::Remeshing_stage::initial_mesh || last == NR::Remeshing_stage::valence))
       throw std::invalid_argument("--lod needs the fit (--stop-after fit or decimation)");
     std::vector<Named_path> outputs{{"-o", output_path},
@@ -329,7 +344,7 @@ int remesh_command(int argc, char** argv)
                                           : NR::parameters::target_vertices(std::size_t(0)),
               NR::parameters::resolution(resolution), NR::parameters::sign_source(source),
               NR::parameters::keep_topology(keep_topology), NR::parameters::max_resolution(max_resolution),
-              NR::parameters::oversampling(oversampling),
+              NR::parameters::oversampling(oversampling), NR::parameters::max_distance(max_distance / 100.),
               NR::parameters::min_interior_valence(std::size_t(decimation.min_valence)),
               NR::parameters::min_border_valence(decimation.border_valence()),
               NR::parameters::relaxation(decimation.relaxation),
@@ -373,7 +388,7 @@ int remesh_command(int argc, char** argv)
     print_topology(std::cout, stats);
     if(stats.valence_run) print_valence(std::cout, stats.valence);
     if(stats.fit_run) print_fit(std::cout, stats.fit);
-    if(stats.decimation_run) print_decimation_stage(std::cout, stats.decimation);
+    if(stats.decimation_run) print_decimation_stage(std::cout, stats.decimation, max_distance > 0.);
 
     // The file itself must certify: it is re-read and certified before it
     // replaces anything.
@@ -386,6 +401,26 @@ int remesh_command(int argc, char** argv)
     double write_seconds = seconds_since(write_start);
     std::cout << "wrote " << output_path << ": " << vertices(output).size() << " vertices, " << written_faces
               << " faces, certified in [30, 90] degrees on the written file\n";
+
+    // The distance bound is claimed only as measured on the written file.
+    std::optional<double> written_distance;
+    double measure_seconds = 0.;
+    if(max_distance > 0.) {
+      const auto measure_start = Clock::now();
+      Mesh written;
+      NR::Read_log log;
+      NR::read_triangle_mesh(output_path, written, log);
+      const double diagonal = NR::internal::bbox_diagonal(input);
+      written_distance = 100. * NR::internal::hausdorff_distance_bound(written, input,
+                                                                      stats.distance.measurement_error * diagonal,
+                                                                      decimation.threads) / diagonal;
+      measure_seconds = seconds_since(measure_start);
+      std::cout << "distance: the written file is within " << std::setprecision(4) << *written_distance
+                << "% of the input's diagonal (symmetric Hausdorff, CGAL's bounded-error estimate plus its error "
+                << 100. * stats.distance.measurement_error << "%) after " << stats.distance.measurements
+                << " measurement(s) in the pipeline: the bound " << max_distance << "% "
+                << (*written_distance <= max_distance ? "holds" : "is NOT met") << "\n";
+    }
 
     // Levels of detail: one decimation of the output, each level certified
     // on its written file and measured against the full-resolution mesh.
@@ -471,19 +506,35 @@ int remesh_command(int argc, char** argv)
       if(stats.valence_run) j["valence"] = fields_json(stats.valence);
       if(stats.fit_run) j["fit"] = fields_json(stats.fit);
       if(stats.decimation_run) j["decimation"] = fields_json(stats.decimation);
+      if(written_distance) {
+        j["max_distance"] = fields_json(stats.distance);
+        j["max_distance"]["requested_percent"] = max_distance;
+        j["max_distance"]["written_file_percent"] = *written_distance;
+        j["max_distance"]["met"] = *written_distance <= max_distance;
+        j["max_distance"]["fractions_of"] = "the input's bounding-box diagonal (the *_percent fields: percent)";
+      }
       j["output_report"] = report_to_json(output_path, report, {});
       if(!ratios.empty()) j["levels"] = levels_json;
       j["timings"] = {{"init", stats.initial_mesh.seconds},
                       {"valence", stats.valence_run ? stats.valence.seconds : 0.},
                       {"fit", stats.fit_run ? stats.fit.seconds : 0.},
                       {"decimation", stats.decimation_run ? stats.decimation.seconds : 0.},
+                      {"distance_measurements", stats.distance.seconds},
                       {"topology", stats.topology.seconds},
                       {"pipeline", stats.seconds},
                       {"write_and_certify", write_seconds},
+                      {"distance_of_written_file", measure_seconds},
                       {"levels", levels_seconds},
                       {"report", seconds_since(report_start)},
                       {"total", seconds_since(start)}};
       write_json_atomically(report_path, j);
+    }
+    if(written_distance && *written_distance > max_distance) {
+      std::cerr << "nonobtuse-remesh remesh: the distance bound " << max_distance << "% is not met: the closest mesh "
+                << "found, written to " << output_path << ", is within " << std::setprecision(4) << *written_distance
+                << "% (resolution " << stats.resolution << ", cap " << stats.max_resolution
+                << "; --max-resolution raises it)\n";
+      return int(bound_not_met);
     }
     return int(success);
   });

@@ -37,6 +37,9 @@ namespace Nonobtuse_remeshing {
 /// mesh, over V by more than 10%, is decimated to V (`angle_bounded_decimation()`,
 /// its relaxation fitting to `input`): the collapses keep the vertices where
 /// the surface needs them, and keep the topology.
+/// With a `max_distance` bound instead, the grid comes from the bound, is
+/// refined while the fitted mesh has little room under it, and the output is
+/// the coarsest decimation level measured within it (`Distance_bound_statistics`).
 ///
 /// Each stage certifies every
 /// change it makes, so `output` is certified whenever this function
@@ -57,15 +60,25 @@ namespace Nonobtuse_remeshing {
 ///     is rebuilt once at the resolution scaled by the square root of the ratio (and the first one
 ///     kept if that fails)
 ///     \cgalParamType{`std::size_t`} \cgalParamNEnd
+///   \cgalParamNBegin{max_distance} instead of `resolution` and `target_vertices`, when not 0: the
+///     fewest vertices whose symmetric Hausdorff distance to `input` is at most this fraction of
+///     its bounding-box diagonal, in (0, 1]. The grid's cube is 1.25 times the bound, refined while
+///     the fitted mesh is over 0.8 times it; the fitted mesh is then decimated to the coarsest of
+///     its levels (10% apart) measured within the bound with CGAL's bounded-error Hausdorff distance
+///     (error: a fiftieth of the bound, added to each measurement). `Distance_bound_statistics`
+///     says what was measured and whether the bound holds; when it does not (the cap), the output
+///     is the closest fitted mesh. Needs the fit (`stop_after` the fit or the decimation)
+///     \cgalParamType{`double`} \cgalParamNEnd
 ///   \cgalParamNBegin{oversampling} with `target_vertices`: the initial mesh is built for this many
 ///     times the target, in [1, 16]; default 1 (2 fits curved inputs closer, see the manual)
 ///     \cgalParamType{`double`} \cgalParamNEnd
 ///   \cgalParamNBegin{keep_topology} refine the initial mesh until its topology is the input's;
-///     default true with a `target_vertices` count, false with a `resolution`
+///     default true with a `target_vertices` count or a `max_distance`, false with a `resolution`
 ///     \cgalParamType{`bool`} \cgalParamNEnd
-///   \cgalParamNBegin{max_resolution} the cap of that refinement, in [1, 1024]; default 0: twice
-///     the resolution given or chosen for the target (about 4 times the vertices); a cap below the
-///     resolution means no refinement
+///   \cgalParamNBegin{max_resolution} the cap of that refinement and of the one for `max_distance`,
+///     in [1, 1024]; default 0: twice the resolution given or chosen for the target (about 4 times
+///     the vertices), four times the first with `max_distance`; a cap below the resolution means no
+///     refinement
 ///     \cgalParamType{`int`} \cgalParamNEnd
 ///   \cgalParamNBegin{sign_source} corner signs of the Marching Cubes; default `Sign_source::automatic`
 ///     \cgalParamType{`Sign_source`} \cgalParamNEnd
@@ -85,7 +98,9 @@ namespace Nonobtuse_remeshing {
 ///   \cgalParamNBegin{min_interior_valence, min_border_valence, max_error, relaxation} of the
 ///     decimation, see `angle_bounded_decimation()`, except that `max_error` defaults to one cube of
 ///     the grid `resolution_for_target_vertices()` gives for the target (divided by the diagonal),
-///     so that no collapse moves the surface further than the pipeline's error without decimating
+///     so that no collapse moves the surface further than the pipeline's error without decimating;
+///     with `max_distance`, a given `max_error` is the ceiling of a single pass instead of the four
+///     passes' rising ones
 ///     \cgalParamNEnd
 ///   \cgalParamNBegin{remeshing_visitor} progress and cancellation, see `Default_remeshing_visitor`
 ///     (pass `std::ref(visitor)` to keep its state); it sees the fit's progress, so a `fit_visitor`

@@ -62,7 +62,8 @@ namespace internal_np {
   X(number_of_threads_t, number_of_threads) /* workers, 0: one per core */ \
   X(keep_topology_t, keep_topology)       /* pipeline: refine the grid */    \
   X(max_resolution_t, max_resolution)     /* pipeline: refinement cap */    \
-  X(oversampling_t, oversampling)         /* pipeline: initial / target */
+  X(oversampling_t, oversampling)         /* pipeline: initial / target */ \
+  X(max_distance_t, max_distance)         /* pipeline: Hausdorff bound */
 
 #define CGAL_NONOBTUSE_DECLARE_TAG(TAG, NAME) enum TAG { NAME };
 CGAL_NONOBTUSE_TAGS(CGAL_NONOBTUSE_DECLARE_TAG)

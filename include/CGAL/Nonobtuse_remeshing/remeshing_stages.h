@@ -125,6 +125,42 @@ void for_each_field(const Topology_comparison& t, F&& f)
 }
 
 /// \ingroup PkgNonobtuseRemeshingRef
+/// The Hausdorff distance bound of `nonobtuse_remesh()` (beyond the thesis):
+/// what was asked, what was measured and whether the bound holds. Distances
+/// are fractions of the bounding-box diagonal of the input; a measured
+/// distance is CGAL's `bounded_error_symmetric_Hausdorff_distance()` plus
+/// its error bound, so the true distance is at most that.
+struct Distance_bound_statistics
+{
+  double max_distance = 0.;        ///< the bound asked for; 0: none
+  double measurement_error = 0.;   ///< the error bound of each measurement (a fiftieth of the bound)
+  double fitted_distance = 0.;     ///< measured on the fitted mesh kept
+  double distance = 0.;            ///< measured on the output
+  bool met = false;                ///< `distance` is at most `max_distance`
+  int refinements = 0;             ///< finer grids built because the fitted mesh was over the bound
+  std::size_t levels = 0;          ///< decimation levels kept as candidates, the fitted mesh included
+  std::size_t measurements = 0;    ///< Hausdorff distances measured
+  double seconds = 0.;             ///< spent measuring
+};
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Calls `f(name, value)` for every field of `d`, as the `for_each_field()`
+/// of statistics.h.
+template <typename F>
+void for_each_field(const Distance_bound_statistics& d, F&& f)
+{
+  f("max_distance", d.max_distance);
+  f("measurement_error", d.measurement_error);
+  f("fitted_distance", d.fitted_distance);
+  f("distance", d.distance);
+  f("met", d.met);
+  f("refinements", d.refinements);
+  f("levels", d.levels);
+  f("measurements", d.measurements);
+  f("seconds", d.seconds);
+}
+
+/// \ingroup PkgNonobtuseRemeshingRef
 /// Statistics of `nonobtuse_remesh()`: those of each stage that ran (the
 /// thesis's Tables 4.1, 7.1 and 7.2) and the resolution used.
 struct Nonobtuse_remeshing_statistics
@@ -145,7 +181,8 @@ struct Nonobtuse_remeshing_statistics
   bool fit_run = false;
   Deform_to_fit_statistics fit;            ///< Table 7.2
   bool decimation_run = false;
-  Angle_bounded_decimation_statistics decimation;  ///< from the fitted mesh to the target vertex count
+  Angle_bounded_decimation_statistics decimation;  ///< from the fitted mesh to the target vertex count or distance bound
+  Distance_bound_statistics distance;      ///< with `max_distance`
   bool cancelled = false;                  ///< the visitor stopped the pipeline
   /// connected components of the input (beyond the thesis)
   std::size_t input_components = 0;

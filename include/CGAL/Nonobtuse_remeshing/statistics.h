@@ -107,7 +107,8 @@ enum class Decimation_stop_reason {
   max_error,         ///< the cheapest collapse left would exceed `max_error` (thesis, 6.5)
   no_collapse_left,  ///< no collapse left keeps the bounds, the valence floor and the topology
   round_limit,       ///< 64 rounds of collapses and relaxation ran
-  cancelled          ///< the visitor returned false
+  cancelled,         ///< the visitor returned false
+  max_distance       ///< in `nonobtuse_remesh()` with `max_distance`: a coarser level was measured over the bound
 };
 
 /// \ingroup PkgNonobtuseRemeshingRef
@@ -144,6 +145,7 @@ inline const char* stop_reason_name(Decimation_stop_reason reason)
   case Decimation_stop_reason::no_collapse_left: return "no collapse left";
   case Decimation_stop_reason::round_limit: return "round limit";
   case Decimation_stop_reason::cancelled: return "cancelled";
+  case Decimation_stop_reason::max_distance: return "distance bound reached";
   }
   return "unknown";
 }

@@ -111,6 +111,26 @@ Report distance_report(const TriangleMesh& mesh, const TriangleMesh& reference, 
   return r;
 }
 
+// An upper bound of the symmetric Hausdorff distance between `mesh` and
+// `reference`: CGAL's bounded-error estimate plus its error bound `error`
+// (absolute); both ways side by side unless `threads` is 1 (CGAL 5.5's
+// Parallel_tag there needs METIS too).
+template <typename TriangleMesh>
+double hausdorff_distance_bound(const TriangleMesh& mesh, const TriangleMesh& reference, double error, int threads)
+{
+  namespace PMP = Polygon_mesh_processing;
+#ifdef CGAL_LINKED_WITH_TBB
+  if(threads != 1) {
+    double to = 0., from = 0.;
+    tbb::parallel_invoke([&] { to = PMP::bounded_error_Hausdorff_distance<Sequential_tag>(mesh, reference, error); },
+                         [&] { from = PMP::bounded_error_Hausdorff_distance<Sequential_tag>(reference, mesh, error); });
+    return (std::max)(to, from) + error;
+  }
+#endif
+  (void)threads;
+  return PMP::bounded_error_symmetric_Hausdorff_distance<Sequential_tag>(mesh, reference, error) + error;
+}
+
 // Output iterator that only counts the face pairs it is given.
 struct Counting_iterator
 {
