@@ -22,6 +22,24 @@
 namespace CGAL {
 namespace Nonobtuse_remeshing {
 
+namespace internal {
+
+// The longest side of the bounding box of the faces of `input`, as the
+// grid's; throws Bad_input outside the range the grid accepts.
+template <typename TriangleMesh, typename VertexPointMap>
+double longest_side_of_faces(const TriangleMesh& input, VertexPointMap vpm)
+{
+  Bbox_3 box;
+  for(auto f : faces(input))
+    for(auto v : vertices_around_face(halfedge(f, input), input)) box += get(vpm, v).bbox();
+  const double longest = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
+  if(longest < 1e-30 || longest > 1e30)  // as the grid refuses it
+    throw Bad_input("the input's size is outside the supported range [1e-30, 1e30]: scale it");
+  return longest;
+}
+
+} // namespace internal
+
 // Vertices of the initial mesh per unit of area, times the squared cube
 // size h: a plane crosses (|n_x| + |n_y| + |n_z|) / h^2 grid edges per unit
 // of area, 1.5 / h^2 on average over normals, and the nonobtuse cases add
@@ -45,14 +63,9 @@ int resolution_for_target_vertices(const TriangleMesh& input, std::size_t target
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  Bbox_3 box;  // of the faces, as the grid's
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, input));
-  for(auto f : faces(input))
-    for(auto v : vertices_around_face(halfedge(f, input), input)) box += get(vpm, v).bbox();
-  const double longest = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
-  if(longest < 1e-30 || longest > 1e30)  // as the grid refuses it
-    throw Bad_input("the input's size is outside the supported range [1e-30, 1e30]: scale it");
+  const double longest = internal::longest_side_of_faces(input, vpm);
   const double area = Polygon_mesh_processing::area(input, CGAL::parameters::vertex_point_map(vpm));
   if(!(area > 0.) || !(longest > 0.) || !std::isfinite(area))
     throw Bad_input("the input has no area to choose a resolution from");

@@ -72,16 +72,11 @@ constexpr double cubes_per_distance = 1.25;
 constexpr double distance_room = 0.8, distance_aim = 0.6;
 
 // The resolution whose cube is cubes_per_distance times `max_distance`, a
-// fraction of the diagonal of the bounding box of the input's faces.
+// fraction of `diagonal`.
 template <typename TriangleMesh>
-int resolution_for_max_distance(const TriangleMesh& input, double max_distance)
+int resolution_for_max_distance(const TriangleMesh& input, double max_distance, double diagonal)
 {
-  Bbox_3 box;
-  for(auto f : faces(input))
-    for(auto v : vertices_around_face(halfedge(f, input), input)) box += get(CGAL::vertex_point, input, v).bbox();
-  const double x = box.xmax() - box.xmin(), y = box.ymax() - box.ymin(), z = box.zmax() - box.zmin();
-  const double longest = (std::max)({x, y, z}), diagonal = std::sqrt(x * x + y * y + z * z);
-  if(!(diagonal > 0.) || !std::isfinite(diagonal)) throw Bad_input("the input's bounding box has no size");
+  const double longest = longest_side_of_faces(input, get(CGAL::vertex_point, input));
   return int((std::min)(1024., std::ceil(longest / (cubes_per_distance * max_distance * diagonal))));
 }
 
@@ -139,7 +134,7 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
   stats.distance.max_distance = max_distance;
   stats.distance.measurement_error = max_distance / 50.;
   stats.resolution = stats.target_vertices > 0 ? resolution_for_target_vertices(input, initial_vertices)
-                     : max_distance > 0.       ? resolution_for_max_distance(input, max_distance)
+                     : max_distance > 0.       ? resolution_for_max_distance(input, max_distance, input_diagonal)
                                                : choose_parameter(get_parameter(np, internal_np::resolution), 100);
   if(stats.resolution < 1 || stats.resolution > 1024)
     throw Bad_parameter("the resolution must lie in [1, 1024]");
@@ -396,8 +391,8 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
     visitor.stage_started(Remeshing_stage::decimation);
     const auto stage_start = Clock::now();
     if(max_distance > 0.) {
-      stats.decimation = decimate_within_distance(output, input, *surface, input_diagonal, decimation_options,
-                                                  has_max_error, relay, bound);
+      stats.decimation = decimate_within_distance(output, *surface, input_diagonal, decimation_options,
+                                                  has_max_error, relay, bound, measure);
       bound.met = bound.distance <= max_distance;
     } else {
       const auto points = get(CGAL::vertex_point, output);

@@ -12,7 +12,6 @@
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_DISTANCE_BOUNDED_DECIMATION_H
 
 #include <CGAL/Nonobtuse_remeshing/internal/Angle_bounded_decimation.h>
-#include <CGAL/Nonobtuse_remeshing/internal/distance_measures.h>
 #include <CGAL/Nonobtuse_remeshing/internal/mesh_helpers.h>
 #include <CGAL/Nonobtuse_remeshing/remeshing_stages.h>
 
@@ -21,7 +20,6 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <type_traits>
@@ -68,25 +66,19 @@ auto soup_of(const TriangleMesh& mesh)
 // `mesh`, fitted and certified, within the bound (`bounds.fitted_distance`),
 // is decimated by `decimation_options` towards levels of
 // distance_level_ratio^i times its vertices, the relaxation fitting it to
-// `surface`; `mesh` becomes the coarsest level whose distance to `input`,
-// plus the measurement error, is at most bounds.max_distance (fractions of
-// `input_diagonal`). Returns the decimation's statistics up to that level.
-template <typename TriangleMesh, typename Relay>
-Angle_bounded_decimation_statistics decimate_within_distance(TriangleMesh& mesh, const TriangleMesh& input,
-                                                             const TriangleMesh& surface, double input_diagonal,
+// `surface`; `mesh` becomes the coarsest level whose `measure` (its
+// distance to the input, plus the measurement error, as a fraction of
+// `input_diagonal`) is at most bounds.max_distance. Returns the decimation's
+// statistics up to that level.
+template <typename TriangleMesh, typename Relay, typename Measure>
+Angle_bounded_decimation_statistics decimate_within_distance(TriangleMesh& mesh, const TriangleMesh& surface,
+                                                             double input_diagonal,
                                                              Angle_bounded_decimation_options options, bool has_max_error,
-                                                             Relay& relay, Distance_bound_statistics& bounds)
+                                                             Relay& relay, Distance_bound_statistics& bounds,
+                                                             const Measure& measure)
 {
-  using Clock = std::chrono::steady_clock;
   const auto points = get(CGAL::vertex_point, mesh);
   const double diagonal = certified_mesh_diagonal(mesh, points);
-  const auto measure = [&](const TriangleMesh& m) {
-    const auto start = Clock::now();
-    const double d = hausdorff_distance_bound(m, input, bounds.measurement_error * input_diagonal, options.threads);
-    ++bounds.measurements;
-    bounds.seconds += std::chrono::duration<double>(Clock::now() - start).count();
-    return d / input_diagonal;
-  };
 
   // Passes with ceilings d, 2d, 4d, 8d: the quadrics, fresh at each pass,
   // sum the planes of the mesh the pass starts from, so their error
