@@ -197,8 +197,8 @@ int remesh_command(int argc, char** argv)
     ("max-distance", po::value<double>(&max_distance),
      "instead of --resolution or --target-vertices: the fewest vertices (the decimation's coarsest level, "
      "levels 10% apart) whose symmetric Hausdorff distance to INPUT is at most PCT % of its bounding-box "
-     "diagonal. The grid's cube is 0.8 PCT, refined while the fitted mesh is over the bound (up to "
-     "--max-resolution). The distance is measured on the written file (CGAL's bounded-error Hausdorff "
+     "diagonal. The grid's cube is 1.25 PCT, refined while the fitted mesh is over 0.8 PCT (up to "
+     "--max-resolution, default 4 times the first resolution). The distance is measured on the written file (CGAL's bounded-error Hausdorff "
      "distance plus its error bound, PCT / 50); exit code 5 when the bound is not met, the closest mesh "
      "found written")
     ("oversampling", po::value<double>(&oversampling)->default_value(1.),
@@ -209,9 +209,10 @@ int remesh_command(int argc, char** argv)
      "keep: while the initial mesh's topology differs from the input's (per input component: components, "
      "borders, Euler characteristic), rebuild it at 1.25 times the resolution, up to --max-resolution, then "
      "decimate the fitted mesh to --target-vertices; ignore: the grid from the budget alone. Default: keep "
-     "with --target-vertices, ignore with --resolution")
+     "with --target-vertices or --max-distance, ignore with --resolution")
     ("max-resolution", po::value<int>(&max_resolution),
-     "cap of that refinement, in [1, 1024] (default: twice the first resolution)")
+     "cap of that refinement (and of --max-distance's), in [1, 1024] (default: twice the first resolution, "
+     "four times with --max-distance)")
     ("stop-after", po::value<std::string>(&stop_after)->default_value("decimation"),
      "last stage to run: init, valence, fit or decimation (which runs only when the fitted mesh is over "
      "--target-vertices by more than 10%)")
