@@ -314,6 +314,42 @@ TEST(NonobtuseRemesh, MaxDistanceHoldsOnTheWrittenFile)
   EXPECT_EQ(num_faces(output), 0u);
 }
 
+// The distance guard: at N = 50 the fit of rotor rounds off the rims of its
+// flat ends and, unguarded, ends farther from the input than the mesh it
+// started from. Guarded, its own measure ends no larger than at the start,
+// and the Hausdorff distance measured on the written file comes back to
+// within 5% of the start's (the guard samples the input about one mesh edge
+// apart, so what lies between its samples may still differ a little).
+TEST(NonobtuseRemesh, FitEndsNoFartherThanItsStart)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  const Mesh rotor = nonobtuse_test::load("rotor.off");
+  const double diagonal = NR::internal::bbox_diagonal(rotor), error = 2e-4 * diagonal;
+  NR::Nonobtuse_remeshing_statistics s;
+  const auto hausdorff = [&](NR::Remeshing_stage last, bool guard, const std::string& name) {
+    Mesh output;
+    s = NR::nonobtuse_remesh(rotor, output,
+                             NR::parameters::combine(NR::parameters::resolution(50), NR::parameters::stop_after(last),
+                                                     NR::parameters::distance_guard(guard)));
+    const Mesh reread = nonobtuse_test::written_and_reread(output, name);
+    EXPECT_TRUE(NR::certify_angle_bounds(reread).is_certified());
+    return PMP::bounded_error_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(reread, rotor, error);
+  };
+  const double start = hausdorff(NR::Remeshing_stage::valence, true, "rotor_start.off");
+  const double unguarded = hausdorff(NR::Remeshing_stage::fit, false, "rotor_unguarded.off");
+  EXPECT_EQ(s.fit.start_distance, 0.);
+  EXPECT_EQ(s.fit.guard_moves, 0u);
+  EXPECT_GT(unguarded, 1.1 * start);
+  const double guarded = hausdorff(NR::Remeshing_stage::fit, true, "rotor_guarded.off");
+  EXPECT_GT(s.fit.guard_moves, 0u);
+  EXPECT_GT(s.fit.start_distance, 0.);
+  EXPECT_LE(s.fit.end_distance, s.fit.start_distance);
+  EXPECT_NEAR(s.fit.start_distance, 100. * start / diagonal, 0.05 * 100. * start / diagonal);
+  EXPECT_EQ(s.fit.intersecting_pairs, 0u);
+  EXPECT_LT(guarded, unguarded);
+  EXPECT_LE(guarded, 1.05 * start + error);
+}
+
 // Bad parameters and inputs throw before any work and leave the output empty.
 TEST(NonobtuseRemesh, Refusals)
 {

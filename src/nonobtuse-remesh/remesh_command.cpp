@@ -237,6 +237,8 @@ int remesh_command(int argc, char** argv)
     ("no-early-smoothing", "fit: complete each optimization phase before smoothing")
     ("no-tangential-smoothing", "fit: smoothing term in every direction, as in the thesis")
     ("no-feature-attraction", "fit: no attraction of the input's vertices and sharp edges")
+    ("no-distance-guard", "fit: do not move back where the fit ended farther from the input than the mesh it "
+                          "started from")
     ("threads", po::value<int>(&decimation.threads)->default_value(0),
      "threads of the fit and of the levels' relaxation (0: one per core); the result is the same for any "
      "number")
@@ -360,6 +362,7 @@ int remesh_command(int argc, char** argv)
               NR::parameters::early_smoothing(vm.count("no-early-smoothing") == 0),
               NR::parameters::tangential_smoothing(vm.count("no-tangential-smoothing") == 0),
               NR::parameters::attract_features(vm.count("no-feature-attraction") == 0),
+              NR::parameters::distance_guard(vm.count("no-distance-guard") == 0),
               NR::parameters::number_of_threads(decimation.threads),
               NR::parameters::remeshing_visitor(std::ref(progress)),
               NR::parameters::memory_budget(memory_limit * 1024. * 1024. * 1024.)));

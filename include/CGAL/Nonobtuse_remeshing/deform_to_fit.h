@@ -38,7 +38,15 @@ namespace Nonobtuse_remeshing {
 /// S acts along the input's tangent plane only (`tangential_smoothing`), and
 /// the input's vertices and points along its sharp and border edges attract
 /// their nearest mesh vertex (`attract_features`). Both can be switched off
-/// to run the thesis's objective as written.
+/// to run the thesis's objective as written. A distance guard
+/// (`distance_guard`) then makes sure the fit does not end farther from the
+/// input than the mesh it started from, as it measures both: the farthest of
+/// the input's feature samples and of points on its faces about an edge apart
+/// from the mesh, and of the mesh's vertices from the input. Where the fit
+/// ends farther, the vertices around the excess move back towards their start
+/// positions, certified like every move, in rounds kept only when they lower
+/// that distance and add no self-intersection; `start_distance` and
+/// `end_distance` in the statistics are the two values.
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{alpha} weight of the distance term D, in [0, 1]; default 0.5
@@ -64,6 +72,8 @@ namespace Nonobtuse_remeshing {
 ///   \cgalParamNBegin{tangential_smoothing} S acts along the input's tangent plane only (beyond the thesis); default true
 ///     \cgalParamType{`bool`} \cgalParamNEnd
 ///   \cgalParamNBegin{attract_features} the input's vertices and points along its sharp and border edges attract their nearest mesh vertex (beyond the thesis); default true
+///     \cgalParamType{`bool`} \cgalParamNEnd
+///   \cgalParamNBegin{distance_guard} moves back where the fit would end farther from the input than the mesh it started from (beyond the thesis); default true
 ///     \cgalParamType{`bool`} \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads} threads that move vertices sharing no edge at the same
 ///     time (oneTBB; without it, one); 0 for one per core; the result is the same, bit for bit,

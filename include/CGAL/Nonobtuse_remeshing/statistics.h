@@ -90,6 +90,12 @@ struct Deform_to_fit_statistics
   std::size_t intersecting_pairs_found = 0;  ///< self-intersecting face pairs after the fit, before untangling
   std::size_t intersecting_pairs = 0;        ///< self-intersecting face pairs left at the end
   std::size_t untangling_moves = 0;
+  double start_distance = 0.;         ///< the distance guard's measure of the mesh as given: the farthest of
+                                      ///< the input's feature samples from it and of its vertices from the
+                                      ///< input, in % of the input's bounding-box diagonal (0 without the guard)
+  double end_distance = 0.;           ///< the same at the end, at most `start_distance` unless
+                                      ///< the guard's moves back could not bring it there
+  std::size_t guard_moves = 0;        ///< moves back towards the start positions, by the distance guard
   double rms_distance = 0.;           ///< root mean square distance of the vertices to the input,
                                       ///< in % of the input's bounding-box diagonal (updated per phase)
   bool budget_exhausted = false;
@@ -97,6 +103,7 @@ struct Deform_to_fit_statistics
   double optimization_seconds = 0.;
   double smoothing_seconds = 0.;
   double untangling_seconds = 0.;
+  double guard_seconds = 0.;
   double seconds = 0.;
 };
 
@@ -213,12 +220,16 @@ void for_each_field(const Deform_to_fit_statistics& s, F&& f)
   f("intersecting_pairs_found", s.intersecting_pairs_found);
   f("untangling_moves", s.untangling_moves);
   f("intersecting_pairs", s.intersecting_pairs);
+  f("start_distance_percent", s.start_distance);
+  f("end_distance_percent", s.end_distance);
+  f("guard_moves", s.guard_moves);
   f("rms_vertex_distance_percent", s.rms_distance);
   f("budget_exhausted", s.budget_exhausted);
   f("cancelled", s.cancelled);
   f("optimization_seconds", s.optimization_seconds);
   f("smoothing_seconds", s.smoothing_seconds);
   f("untangling_seconds", s.untangling_seconds);
+  f("guard_seconds", s.guard_seconds);
   f("seconds", s.seconds);
 }
 

@@ -206,6 +206,7 @@ private:
     Deform_to_fit_options o;
     o.tolerance = options_.relaxation_tolerance;
     o.threads = options_.threads;
+    o.distance_guard = false;  // each round's collapses moved the surface already; the error bound rules
     // the decimation's visitor decides
     auto fit_visitor = keep_going_relay([this](const Deform_to_fit_statistics&) { return visitor_.keep_going(stats_); });
     Deform_to_fit<TriangleMesh, VertexPointMap, Input, decltype(fit_visitor)> fit(mesh_, vpm_, closest,

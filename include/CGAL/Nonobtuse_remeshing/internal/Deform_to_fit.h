@@ -12,6 +12,7 @@
 #include <CGAL/Nonobtuse_remeshing/exceptions.h>
 #include <CGAL/Nonobtuse_remeshing/internal/angle_predicates.h>
 #include <CGAL/Nonobtuse_remeshing/internal/closest_triangle.h>
+#include <CGAL/Nonobtuse_remeshing/internal/distance_guard.h>
 #include <CGAL/Nonobtuse_remeshing/internal/epick_points.h>
 #include <CGAL/Nonobtuse_remeshing/internal/feasible_region.h>
 #include <CGAL/Nonobtuse_remeshing/internal/feature_attraction.h>
@@ -54,6 +55,7 @@ struct Deform_to_fit_options
   bool early_smoothing = true;
   bool tangential_smoothing = true;
   bool attract_features = true;
+  bool distance_guard = true;
   int threads = 0;  // 0: one per core
 };
 
@@ -75,6 +77,7 @@ Deform_to_fit_options deform_to_fit_options(const NamedParameters& np, int& ring
   o.early_smoothing = choose_parameter(get_parameter(np, internal_np::early_smoothing), o.early_smoothing);
   o.tangential_smoothing = choose_parameter(get_parameter(np, internal_np::tangential_smoothing), o.tangential_smoothing);
   o.attract_features = choose_parameter(get_parameter(np, internal_np::attract_features), o.attract_features);
+  o.distance_guard = choose_parameter(get_parameter(np, internal_np::distance_guard), o.distance_guard);
   o.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), o.threads);
   rings = choose_parameter(get_parameter(np, internal_np::quadric_rings), 0);
   if(o.threads < 0) throw Bad_parameter("the number of threads must be at least 0 (0: one per core)");
@@ -122,7 +125,7 @@ public:
     stats_.vertices = n;
     for(std::size_t i = 0; i < n; ++i) initial_.push_back(position(i));
     classify_borders();
-    if(options_.attract_features) {
+    if(options_.attract_features || options_.distance_guard) {
       // Sample spacing: the summed edge length over num_edges(), which for a
       // Surface_mesh counts removed edges too. On a fresh mesh it is the mean
       // edge length; during the decimation's relaxation it is finer, and that
@@ -134,7 +137,17 @@ public:
                                                    point(target(halfedge(e, mesh_), mesh_))));
       const double spacing = length / double((std::max)(std::size_t(1), std::size_t(num_edges(mesh_))));
       samples_ = input_.feature_samples(spacing);
-      owners_ = std::make_unique<Feature_sample_owners>(samples_, on_input_border_, spacing);
+      if(options_.distance_guard) {
+        for(const auto& sample : samples_) guard_points_.push_back(sample.first);
+        add_face_samples(input_, spacing, guard_points_);
+        const auto measure_start = Clock::now();
+        start_distance_ = guard_distance(*this, 0., nullptr);
+        stats_.guard_seconds = seconds_since(measure_start);
+      }
+      if(options_.attract_features)
+        owners_ = std::make_unique<Feature_sample_owners>(samples_, on_input_border_, spacing);
+      else
+        samples_.clear();
     }
     attracted_begin_.assign(n + 1, 0);
     stats_.feature_samples = samples_.size();
@@ -155,6 +168,7 @@ private:
   {
     start_ = Clock::now();
     phase_start_ = start_;
+    const double start_guard_seconds = stats_.guard_seconds;  // measured on construction
     int smoothing_left = options_.smoothing_steps;
     evaluate_all();
     while(!stopped()) {
@@ -174,8 +188,9 @@ private:
     }
     end_phase(Deform_to_fit_stage::optimization);
     if(!stats_.budget_exhausted && !stats_.cancelled) untangle();
+    if(options_.distance_guard && !stats_.budget_exhausted && !stats_.cancelled) internal::guard_the_distance(*this);
     update_rms_distance();
-    stats_.seconds = seconds_since(start_);
+    stats_.seconds = seconds_since(start_) + start_guard_seconds;
   }
 
   struct Entry
@@ -667,12 +682,22 @@ private:
   template <typename Fit>
   friend void untangle(Fit& fit);
   template <typename Fit>
+  friend std::vector<std::size_t> region_around(const Fit& fit, const std::vector<std::size_t>& seeds, int rings);
+  template <typename Fit>
+  friend class Saved_region;
+  template <typename Fit>
   friend std::vector<std::pair<typename Fit::face_descriptor, typename Fit::face_descriptor> > intersecting_pairs(
       Fit& fit);
   template <typename Fit>
   friend bool untangle_attempt(Fit& fit, const std::vector<std::size_t>& region, typename Fit::Goal goal,
                                std::vector<std::pair<typename Fit::face_descriptor, typename Fit::face_descriptor> >& pairs,
                                bool strictly);
+
+  // Beyond the thesis: distance_guard.h.
+  template <typename Fit>
+  friend double guard_distance(Fit& fit, double limit, std::vector<std::size_t>* far);
+  template <typename Fit>
+  friend void guard_the_distance(Fit& fit);
 
   void update_rms_distance()
   {
@@ -705,6 +730,8 @@ private:
   std::vector<std::size_t> attracted_;            // sample indices, grouped by nearest vertex
   std::vector<std::size_t> attracted_begin_;      // vertex i owns attracted_[begin[i], begin[i+1])
   std::unique_ptr<Feature_sample_owners> owners_;
+  std::vector<Point> guard_points_;  // feature and face samples, for the distance guard
+  double start_distance_ = 0.;       // the guard's distance of the mesh as given
   std::vector<Eigen::Vector3d> initial_;  // positions in the mesh as given
   std::vector<Eigen::Vector3d> target_;
   std::vector<std::size_t> stamp_;

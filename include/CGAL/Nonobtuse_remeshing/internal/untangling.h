@@ -59,6 +59,56 @@ std::vector<std::pair<typename Fit::face_descriptor, typename Fit::face_descript
   return by_index;
 }
 
+// `seeds` (distinct vertex indices) and the `rings` rings of vertices
+// around them, the seeds first.
+template <typename Fit>
+std::vector<std::size_t> region_around(const Fit& fit, const std::vector<std::size_t>& seeds, int rings)
+{
+  using vertex_descriptor = typename Fit::vertex_descriptor;
+  std::vector<bool> chosen(fit.vertices_.size(), false);
+  for(std::size_t i : seeds) chosen[i] = true;
+  std::vector<std::size_t> region = seeds, front = seeds;
+  for(int ring = 0; ring < rings; ++ring) {
+    std::vector<std::size_t> next;
+    for(std::size_t i : front)
+      for(vertex_descriptor w : vertices_around_target(halfedge(fit.vertices_[i], fit.mesh_), fit.mesh_))
+        if(!chosen[get(fit.index_, w)]) {
+          chosen[get(fit.index_, w)] = true;
+          next.push_back(get(fit.index_, w));
+        }
+    region.insert(region.end(), next.begin(), next.end());
+    front.swap(next);
+  }
+  return region;
+}
+
+// The points and closest input triangles of a region of the fit's vertices,
+// to roll its moves back.
+template <typename Fit>
+class Saved_region
+{
+public:
+  Saved_region(const Fit& fit, const std::vector<std::size_t>& region) : region_(region)
+  {
+    for(std::size_t i : region) {
+      points_.push_back(fit.point(fit.vertices_[i]));
+      hints_.push_back(fit.hint_[i]);
+    }
+  }
+  void restore(Fit& fit) const
+  {
+    for(std::size_t j = 0; j < region_.size(); ++j) {
+      put_point(fit.vpm_, fit.vertices_[region_[j]], points_[j]);
+      fit.hint_[region_[j]] = hints_[j];
+    }
+  }
+
+private:
+  const std::vector<std::size_t>& region_;
+  std::vector<Epick::Point_3> points_;
+  std::vector<typename Fit::face_descriptor> hints_;
+};
+
 template <typename Fit>
 bool untangle_attempt(Fit& fit, const std::vector<std::size_t>& region, typename Fit::Goal goal,
                       std::vector<std::pair<typename Fit::face_descriptor, typename Fit::face_descriptor> >& pairs,
@@ -82,27 +132,15 @@ void untangle(Fit& fit)
   fit.stats_.intersecting_pairs_found = pairs.size();
   for(int round = 1; round <= 5 && !pairs.empty() && !fit.stats_.budget_exhausted && !fit.stats_.cancelled; ++round) {
     std::vector<bool> chosen(fit.vertices_.size(), false);
-    std::vector<std::size_t> front;
+    std::vector<std::size_t> own;
     for(const auto& p : pairs)
       for(face_descriptor f : {p.first, p.second})
         for(vertex_descriptor w : vertices_around_face(halfedge(f, fit.mesh_), fit.mesh_))
           if(!chosen[get(fit.index_, w)]) {
             chosen[get(fit.index_, w)] = true;
-            front.push_back(get(fit.index_, w));
+            own.push_back(get(fit.index_, w));
           }
-    const std::vector<std::size_t> own = front;
-    std::vector<std::size_t> region = front;
-    for(int ring = 0; ring < round; ++ring) {
-      std::vector<std::size_t> next;
-      for(std::size_t i : front)
-        for(vertex_descriptor w : vertices_around_target(halfedge(fit.vertices_[i], fit.mesh_), fit.mesh_))
-          if(!chosen[get(fit.index_, w)]) {
-            chosen[get(fit.index_, w)] = true;
-            next.push_back(get(fit.index_, w));
-          }
-      region.insert(region.end(), next.begin(), next.end());
-      front.swap(next);
-    }
+    const std::vector<std::size_t> region = region_around(fit, own, round);
     // Constrained smoothing of the region, kept unless it adds pairs; if
     // pairs are left, moves of the pairs' own vertices back towards the
     // initial mesh, kept only if they remove pairs. What is not kept is
@@ -123,13 +161,7 @@ bool untangle_attempt(Fit& fit, const std::vector<std::size_t>& region, typename
                       bool strictly)
 {
   using face_descriptor = typename Fit::face_descriptor;
-  using Point = Epick::Point_3;
-  std::vector<Point> saved;
-  std::vector<face_descriptor> saved_hints;
-  for(std::size_t i : region) {
-    saved.push_back(fit.point(fit.vertices_[i]));
-    saved_hints.push_back(fit.hint_[i]);
-  }
+  const Saved_region<Fit> saved(fit, region);
   std::size_t moves = 0;
   for(int pass = 0; pass < 3; ++pass)
     for(std::size_t i : region) {
@@ -146,10 +178,7 @@ bool untangle_attempt(Fit& fit, const std::vector<std::size_t>& region, typename
     return removed;
   }
   fit.stats_.moves -= moves;
-  for(std::size_t j = 0; j < region.size(); ++j) {
-    put_point(fit.vpm_, fit.vertices_[region[j]], saved[j]);
-    fit.hint_[region[j]] = saved_hints[j];
-  }
+  saved.restore(fit);
   return false;
 }
 
