@@ -140,9 +140,8 @@ public:
       if(options_.distance_guard) {
         for(const auto& sample : samples_) guard_points_.push_back(sample.first);
         add_face_samples(input_, spacing, guard_points_);
-        const auto measure_start = Clock::now();
-        start_distance_ = guard_distance(*this, 0., nullptr);
-        stats_.guard_seconds = seconds_since(measure_start);
+        std::vector<bool> unused;
+        start_mesh_side_ = mesh_side(*this, 0., nullptr, unused);
       }
       if(options_.attract_features)
         owners_ = std::make_unique<Feature_sample_owners>(samples_, on_input_border_, spacing);
@@ -168,7 +167,6 @@ private:
   {
     start_ = Clock::now();
     phase_start_ = start_;
-    const double start_guard_seconds = stats_.guard_seconds;  // measured on construction
     int smoothing_left = options_.smoothing_steps;
     evaluate_all();
     while(!stopped()) {
@@ -190,7 +188,7 @@ private:
     if(!stats_.budget_exhausted && !stats_.cancelled) untangle();
     if(options_.distance_guard && !stats_.budget_exhausted && !stats_.cancelled) internal::guard_the_distance(*this);
     update_rms_distance();
-    stats_.seconds = seconds_since(start_) + start_guard_seconds;
+    stats_.seconds = seconds_since(start_);
   }
 
   struct Entry
@@ -695,6 +693,13 @@ private:
 
   // Beyond the thesis: distance_guard.h.
   template <typename Fit>
+  friend struct Start_point_map;
+  template <typename Fit, typename Points>
+  friend double input_side(Fit& fit, const Points& points, double limit, std::vector<std::size_t>* far,
+                           std::vector<bool>& chosen);
+  template <typename Fit>
+  friend double mesh_side(Fit& fit, double limit, std::vector<std::size_t>* far, std::vector<bool>& chosen);
+  template <typename Fit>
   friend double guard_distance(Fit& fit, double limit, std::vector<std::size_t>* far);
   template <typename Fit>
   friend void guard_the_distance(Fit& fit);
@@ -731,7 +736,7 @@ private:
   std::vector<std::size_t> attracted_begin_;      // vertex i owns attracted_[begin[i], begin[i+1])
   std::unique_ptr<Feature_sample_owners> owners_;
   std::vector<Point> guard_points_;  // feature and face samples, for the distance guard
-  double start_distance_ = 0.;       // the guard's distance of the mesh as given
+  double start_mesh_side_ = 0.;      // the guard's mesh side of the mesh as given (distance_guard.h)
   std::vector<Eigen::Vector3d> initial_;  // positions in the mesh as given
   std::vector<Eigen::Vector3d> target_;
   std::vector<std::size_t> stamp_;

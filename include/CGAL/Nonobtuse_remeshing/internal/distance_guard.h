@@ -16,6 +16,8 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#include <boost/property_map/property_map.hpp>
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -53,54 +55,92 @@ void add_face_samples(const Input& input, double spacing, std::vector<Epick::Poi
   }
 }
 
-// The distance between the fit's mesh and the input as the guard measures
-// it: the farthest of the guard points (the input's feature samples: its
-// vertices, thinned to one per cell of the sample spacing, and points along
-// its sharp and border edges; and points on its faces, add_face_samples)
-// from the mesh, and of the mesh's vertices from the input. With `far`, also the vertices near what is farther than
-// `limit`: the corners of the face closest to each such guard point, and
-// each such vertex. Queries run on the fit's workers; the result does not
-// depend on their number.
+// The mesh's vertices at their positions when the fit started (a readable
+// property map).
+template <typename Fit>
+struct Start_point_map
+{
+  using key_type = typename Fit::vertex_descriptor;
+  using value_type = Epick::Point_3;
+  using reference = Epick::Point_3;
+  using category = boost::readable_property_map_tag;
+  const Fit* fit;
+  Epick::Point_3 at(const key_type& v) const
+  {
+    const Eigen::Vector3d& p = fit->initial_[get(fit->index_, v)];
+    return Epick::Point_3(p[0], p[1], p[2]);
+  }
+  friend Epick::Point_3 get(const Start_point_map& map, const key_type& v) { return map.at(v); }
+};
+
+// Adds vertex i to `far` once (`chosen` marks those added).
+inline void choose(std::size_t i, std::vector<std::size_t>* far, std::vector<bool>& chosen)
+{
+  if(far && !chosen[i]) {
+    chosen[i] = true;
+    far->push_back(i);
+  }
+}
+
+// The guard's input side: the farthest of the guard points (the input's
+// feature samples: its vertices, thinned to one per cell of the sample
+// spacing, and points along its sharp and border edges; and points on its
+// faces, add_face_samples) from the mesh with its vertices at `points`.
+// With `far`, also the corners of the face closest to each guard point
+// farther than `limit`. Queries run on the fit's workers; the result does
+// not depend on their number.
+template <typename Fit, typename Points>
+double input_side(Fit& fit, const Points& points, double limit, std::vector<std::size_t>* far,
+                  std::vector<bool>& chosen)
+{
+  using Mesh = std::remove_reference_t<decltype(fit.mesh_)>;
+  using Primitive = AABB_face_graph_triangle_primitive<Mesh, Points>;
+  using Tree = AABB_tree<AABB_traits<Epick, Primitive> >;
+  const std::vector<Epick::Point_3>& guard = fit.guard_points_;
+  Tree tree(faces(fit.mesh_).first, faces(fit.mesh_).second, fit.mesh_, points);
+  tree.accelerate_distance_queries();
+  std::vector<std::pair<double, typename Fit::face_descriptor> > nearest(guard.size());
+  fit.pool_.for_each(guard.size(), [&](std::size_t s, int) {
+    const auto hit = tree.closest_point_and_primitive(guard[s]);
+    nearest[s] = std::make_pair(std::sqrt(CGAL::squared_distance(guard[s], hit.first)), hit.second);
+  });
+  double farthest = 0.;
+  for(const auto& n : nearest) {
+    farthest = (std::max)(farthest, n.first);
+    if(n.first > limit)
+      for(auto v : vertices_around_face(halfedge(n.second, fit.mesh_), fit.mesh_)) choose(get(fit.index_, v), far, chosen);
+  }
+  return farthest;
+}
+
+// The guard's mesh side: the farthest of the mesh's vertices, where they
+// are now, from the input (their closest input triangles are the fit's
+// hints); with `far`, also those farther than `limit`.
+template <typename Fit>
+double mesh_side(Fit& fit, double limit, std::vector<std::size_t>* far, std::vector<bool>& chosen)
+{
+  std::vector<double> from_mesh(fit.vertices_.size());
+  fit.pool_.for_each(fit.vertices_.size(), [&](std::size_t i, int) {
+    const Epick::Point_3 p = fit.point(fit.vertices_[i]);
+    from_mesh[i] = std::sqrt(CGAL::squared_distance(p, fit.input_.triangle(fit.hint_[i])));
+  });
+  double farthest = 0.;
+  for(std::size_t i = 0; i < from_mesh.size(); ++i) {
+    farthest = (std::max)(farthest, from_mesh[i]);
+    if(from_mesh[i] > limit) choose(i, far, chosen);
+  }
+  return farthest;
+}
+
+// The distance between the fit's mesh, as it is now, and the input as the
+// guard measures it (both sides); with `far`, also the vertices near what
+// is farther than `limit`, in the order found.
 template <typename Fit>
 double guard_distance(Fit& fit, double limit, std::vector<std::size_t>* far)
 {
-  using Mesh = std::remove_reference_t<decltype(fit.mesh_)>;
-  using Points = std::remove_const_t<decltype(fit.points_)>;
-  using Primitive = AABB_face_graph_triangle_primitive<Mesh, Points>;
-  using Tree = AABB_tree<AABB_traits<Epick, Primitive> >;
-  using face_descriptor = typename Fit::face_descriptor;
-  const std::vector<Epick::Point_3>& guard = fit.guard_points_;
-  Tree tree(faces(fit.mesh_).first, faces(fit.mesh_).second, fit.mesh_, fit.points_);
-  tree.accelerate_distance_queries();
-  std::vector<double> from_input(guard.size()), from_mesh(fit.vertices_.size());
-  std::vector<face_descriptor> nearest(guard.size());
-  fit.pool_.for_each(guard.size(), [&](std::size_t s, int) {
-    const auto hit = tree.closest_point_and_primitive(guard[s]);
-    from_input[s] = std::sqrt(CGAL::squared_distance(guard[s], hit.first));
-    nearest[s] = hit.second;
-  });
-  fit.pool_.for_each(fit.vertices_.size(), [&](std::size_t i, int) {
-    const Epick::Point_3 p = fit.point(fit.vertices_[i]);
-    from_mesh[i] = std::sqrt(CGAL::squared_distance(p, fit.input_.triangle(fit.hint_[i])));  // the closest
-  });
-  double farthest = 0.;
   std::vector<bool> chosen(fit.vertices_.size(), false);
-  const auto choose = [&](std::size_t i) {
-    if(far && !chosen[i]) {
-      chosen[i] = true;
-      far->push_back(i);
-    }
-  };
-  for(std::size_t s = 0; s < guard.size(); ++s) {
-    farthest = (std::max)(farthest, from_input[s]);
-    if(from_input[s] > limit)
-      for(auto v : vertices_around_face(halfedge(nearest[s], fit.mesh_), fit.mesh_)) choose(get(fit.index_, v));
-  }
-  for(std::size_t i = 0; i < from_mesh.size(); ++i) {
-    farthest = (std::max)(farthest, from_mesh[i]);
-    if(from_mesh[i] > limit) choose(i);
-  }
-  return farthest;
+  const double from_input = input_side(fit, fit.points_, limit, far, chosen);
+  return (std::max)(from_input, mesh_side(fit, limit, far, chosen));
 }
 
 // Where the fitted mesh is farther from the input than the mesh it started
@@ -117,7 +157,10 @@ template <typename Fit>
 void guard_the_distance(Fit& fit)
 {
   const auto start = std::chrono::steady_clock::now();
-  const double limit = fit.start_distance_;
+  // the mesh the fit started from: its input side now, from the start
+  // positions, its mesh side as measured when the fit started
+  std::vector<bool> unused;
+  const double limit = (std::max)(input_side(fit, Start_point_map<Fit>{&fit}, 0., nullptr, unused), fit.start_mesh_side_);
   std::vector<std::size_t> far;
   double distance = guard_distance(fit, limit, &far);
   std::size_t pairs = fit.stats_.intersecting_pairs;
