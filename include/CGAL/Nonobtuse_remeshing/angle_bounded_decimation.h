@@ -116,14 +116,12 @@ Angle_bounded_decimation_statistics angle_bounded_decimation(
   const std::size_t target =
       choose_parameter(get_parameter(np, internal_np::target_vertices), std::size_t(std::llround(ratio * double(n))));
   auto given = choose_parameter(get_parameter(np, internal_np::decimation_visitor), Default_decimation_visitor());
-  auto& visitor = internal::visitor_reference(given);
   TriangleMesh reference;  // the full mesh, which the relaxation fits to
   if(o.relaxation) copy_face_graph(mesh, reference, CGAL::parameters::vertex_point_map(vpm));
-  internal::Angle_bounded_decimation<TriangleMesh, std::remove_const_t<decltype(vpm)>,
-                                     std::remove_reference_t<decltype(visitor)> >
-      decimation(mesh, vpm, o, diagonal, visitor);
-  return decimation.run({target}, reference, get_const_property_map(CGAL::vertex_point, reference),
-                        [](std::size_t, bool, const Angle_bounded_decimation_statistics&) {});
+  return internal::angle_bounded_decimation_with(
+      mesh, vpm, o, diagonal, {target}, reference, get_const_property_map(CGAL::vertex_point, reference),
+      internal::keep_going_function<Angle_bounded_decimation_statistics>(internal::visitor_reference(given)),
+      [](std::size_t, bool, const Angle_bounded_decimation_statistics&) {});
 }
 
 /// \ingroup PkgNonobtuseRemeshingRef
@@ -154,19 +152,17 @@ std::vector<Decimation_level<TriangleMesh> > angle_bounded_decimation_hierarchy(
   std::vector<std::size_t> targets;
   for(double r : ratios) targets.push_back(std::size_t(std::llround(r * double(vertices(mesh).size()))));
   auto given = choose_parameter(get_parameter(np, internal_np::decimation_visitor), Default_decimation_visitor());
-  auto& visitor = internal::visitor_reference(given);
-  const auto vpm = get(CGAL::vertex_point, work);
-  internal::Angle_bounded_decimation<TriangleMesh, std::remove_const_t<decltype(vpm)>,
-                                     std::remove_reference_t<decltype(visitor)> >
-      decimation(work, vpm, o, diagonal, visitor);
   std::vector<Decimation_level<TriangleMesh> > levels;
-  decimation.run(targets, mesh, input_vpm, [&](std::size_t i, bool reached, const Angle_bounded_decimation_statistics& s) {
-    levels.emplace_back();
-    copy_face_graph(work, levels.back().mesh);
-    levels.back().target_vertices = targets[i];
-    levels.back().reached = reached;
-    levels.back().statistics = s;
-  });
+  internal::angle_bounded_decimation_with(
+      work, get(CGAL::vertex_point, work), o, diagonal, targets, mesh, input_vpm,
+      internal::keep_going_function<Angle_bounded_decimation_statistics>(internal::visitor_reference(given)),
+      [&](std::size_t i, bool reached, const Angle_bounded_decimation_statistics& s) {
+        levels.emplace_back();
+        copy_face_graph(work, levels.back().mesh);
+        levels.back().target_vertices = targets[i];
+        levels.back().reached = reached;
+        levels.back().statistics = s;
+      });
   return levels;
 }
 

@@ -24,6 +24,34 @@
 namespace CGAL {
 namespace Nonobtuse_remeshing {
 
+namespace internal {
+
+// deform_to_fit() once its parameters are read: one instantiation per mesh
+// type and point maps, whatever the parameters and the visitor.
+template <typename TriangleMesh, typename VertexPointMap, typename InputPointMap>
+Deform_to_fit_statistics deform_to_fit_with(TriangleMesh& mesh, VertexPointMap vpm, const TriangleMesh& input,
+                                            InputPointMap input_vpm, const Deform_to_fit_options& o, int rings,
+                                            const Keep_going_function<Deform_to_fit_statistics>& keep_going)
+{
+  if(num_faces(input) == 0) throw Bad_input("deform_to_fit: the input has no face");
+  if(!is_triangle_mesh(input)) throw Bad_input("deform_to_fit: the input is not a triangle mesh");
+  if(!certify_angle_bounds(mesh, CGAL::parameters::vertex_point_map(vpm)).is_certified())
+    throw Bad_input("deform_to_fit needs a mesh certified in [30, 90] degrees");
+
+  const Bbox_3 box = Polygon_mesh_processing::bbox(input, CGAL::parameters::vertex_point_map(input_vpm));
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  if(!(diagonal > 0.)) throw Bad_input("deform_to_fit: the input's bounding box has no size");
+  auto visitor = keep_going_relay(keep_going);
+  using Input = Closest_triangle<TriangleMesh, InputPointMap>;
+  const Input closest(input, input_vpm, rings);
+  Deform_to_fit<TriangleMesh, VertexPointMap, Input, decltype(visitor)> optimizer(mesh, vpm, closest, diagonal, o,
+                                                                                 visitor);
+  return optimizer.run();
+}
+
+} // namespace internal
+
 /// \ingroup PkgNonobtuseRemeshingRef
 /// Deform-to-fit (thesis, chapter 5): moves the vertices of `mesh`, whose
 /// angles must already lie in [30, 90] degrees (the initial mesh's do), to
@@ -110,27 +138,27 @@ Deform_to_fit_statistics deform_to_fit(TriangleMesh& mesh, const TriangleMesh& i
                                     get_property_map(CGAL::vertex_point, mesh));
   const auto input_vpm = choose_parameter(get_parameter(np_input, CGAL::internal_np::vertex_point),
                                           get_const_property_map(CGAL::vertex_point, input));
-  if(num_faces(input) == 0) throw Bad_input("deform_to_fit: the input has no face");
-  if(!is_triangle_mesh(input)) throw Bad_input("deform_to_fit: the input is not a triangle mesh");
-  if(!certify_angle_bounds(mesh, CGAL::parameters::vertex_point_map(vpm)).is_certified())
-    throw Bad_input("deform_to_fit needs a mesh certified in [30, 90] degrees");
-
-  const Bbox_3 box = Polygon_mesh_processing::bbox(input, CGAL::parameters::vertex_point_map(input_vpm));
-  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                                    CGAL::square(box.zmax() - box.zmin()));
-  if(!(diagonal > 0.)) throw Bad_input("deform_to_fit: the input's bounding box has no size");
   // a visitor given by value is copied, one given with std::ref is used in place
   auto given = choose_parameter(get_parameter(np, internal_np::fit_visitor), Default_deform_to_fit_visitor());
-  auto& visitor = internal::visitor_reference(given);
-  using Input = internal::Closest_triangle<TriangleMesh, std::remove_const_t<decltype(input_vpm)> >;
-  const Input closest(input, input_vpm, rings);
-  internal::Deform_to_fit<TriangleMesh, std::remove_const_t<decltype(vpm)>, Input,
-                          std::remove_reference_t<decltype(visitor)> >
-      optimizer(mesh, vpm, closest, diagonal, o, visitor);
-  return optimizer.run();
+  return internal::deform_to_fit_with(mesh, vpm, input, input_vpm, o, rings,
+                                      internal::keep_going_function<Deform_to_fit_statistics>(
+                                          internal::visitor_reference(given)));
 }
 
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
+
+#if defined(CGAL_NONOBTUSE_REMESHING_COMPILED) && !defined(CGAL_NONOBTUSE_REMESHING_INSTANTIATE_FIT)
+#include <CGAL/Nonobtuse_remeshing/internal/compiled_surface_mesh.h>
+namespace CGAL {
+namespace Nonobtuse_remeshing {
+namespace internal {
+extern template Deform_to_fit_statistics deform_to_fit_with(Compiled_mesh&, Compiled_point_map, const Compiled_mesh&,
+                                                            Compiled_point_map, const Deform_to_fit_options&, int,
+                                                            const Keep_going_function<Deform_to_fit_statistics>&);
+} // namespace internal
+} // namespace Nonobtuse_remeshing
+} // namespace CGAL
+#endif
 
 #endif // CGAL_NONOBTUSE_REMESHING_DEFORM_TO_FIT_H

@@ -132,67 +132,24 @@ void for_each_field(const Marching_cubes_result& r, F&& f)
   f("seconds", r.seconds);
 }
 
-/// \ingroup PkgNonobtuseRemeshingRef
-/// Builds the initial nonobtuse mesh of `input` into `output` (cleared first):
-/// the nonobtuse Marching Cubes of the thesis's chapter 4 on a grid of
-/// `resolution` cubes along the longest side of the input's bounding box.
-/// Output vertices lie at cube-edge midpoints and cube centres, exactly, so
-/// every angle lies in [35.26, 90] degrees exactly; the output is a manifold
-/// triangle mesh oriented like the input (with the inside test, each output
-/// component follows the orientation of the input component it comes from).
-///
-/// \cgalNamedParamsBegin
-///   \cgalParamNBegin{resolution} cubes along the longest side (default 100)
-///     \cgalParamType{`int`} \cgalParamNEnd
-///   \cgalParamNBegin{sign_source} `Sign_source::automatic` (default),
-///     `Sign_source::patches`, `Sign_source::winding_number` or
-///     `Sign_source::inside_test` (closed inputs only)
-///     \cgalParamType{`Sign_source`} \cgalParamNEnd
-///   \cgalParamNBegin{number_of_threads} threads of the self-intersection test and of the
-///     winding numbers (0, the default: one per core); the result does not depend on it
-///     \cgalParamType{`int`} \cgalParamNEnd
-///   \cgalParamNBegin{memory_budget} bytes the construction, and the stages
-///     after it, may use, as estimated from the patches of input triangles met
-///     by the grid (about 2 KiB each, measured peak); a `double`, default
-///     `default_memory_budget` (4 GiB). Beyond it `Memory_budget_exceeded` is
-///     thrown before the mesh is built.
-///     \cgalParamType{`double`} \cgalParamNEnd
-///   \cgalParamNBegin{vertex_point_map} the points of `input`; default its internal point map
-///     \cgalParamType{a model of `ReadWritePropertyMap` (`ReadablePropertyMap` for a mesh only read) with the vertex descriptors as keys and points with double coordinates as values} \cgalParamNEnd
-/// \cgalNamedParamsEnd
-///
-/// `np_out` may hold the `vertex_point_map` of `output`, through which its points are written.
-/// The points must have double coordinates (see `deform_to_fit()`).
-///
-/// Throws `Bad_parameter` for a resolution outside [1, 1024] or a budget that
-/// is not positive; `Bad_input` for a flat input, an input too small or too
-/// far from the origin for exact grid coordinates, sheets closer together
-/// than a cube, or an inside test asked on an open input; and
-/// `Memory_budget_exceeded` (a `Bad_input`) as said above.
-template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters,
-          typename OutputNamedParameters = CGAL::parameters::Default_named_parameters>
-Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, TriangleMesh& output,
-                                               const NamedParameters& np = CGAL::parameters::default_values(),
-                                               const OutputNamedParameters& np_out = CGAL::parameters::default_values())
+namespace internal {
+
+// nonobtuse_marching_cubes() once its parameters are read: one instantiation
+// per mesh type and point maps.
+template <typename TriangleMesh, typename InputPointMap, typename OutputPointMap>
+Marching_cubes_result nonobtuse_marching_cubes_with(const TriangleMesh& input, InputPointMap input_vpm,
+                                                    TriangleMesh& output, OutputPointMap output_vpm, int resolution,
+                                                    Sign_source source, int threads, double budget)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
   namespace PMP = Polygon_mesh_processing;
   const auto start = std::chrono::steady_clock::now();
 
   Marching_cubes_result result;
-  result.resolution = choose_parameter(get_parameter(np, internal_np::resolution), 100);
-  const Sign_source source = choose_parameter(get_parameter(np, internal_np::sign_source), Sign_source::automatic);
-  const int threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 0);
-  if(threads < 0) throw Bad_parameter("the number of threads must not be negative");
+  result.resolution = resolution;
   if(!is_triangle_mesh(input) || faces(input).size() == 0)
     throw Bad_input("nonobtuse_marching_cubes: the input must be a non-empty triangle mesh");
   if(source == Sign_source::inside_test && !is_closed(input))
     throw Bad_input("the inside test needs a closed input");
-  const auto input_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                          get_const_property_map(CGAL::vertex_point, input));
-  const auto output_vpm = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
-                                           get_property_map(CGAL::vertex_point, output));
 
   const internal::Input_triangles in = internal::input_triangles(input, input_vpm);
   std::vector<internal::Epick::Point_3> corners;
@@ -213,8 +170,6 @@ Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, Triang
   // rotor at N = 100 to 400, is 1.7 to 1.95 KiB per patch (a patch per
   // intersected cube, more where input sheets share a cube); 16 bytes per
   // (cube, triangle) pair come first. Both are checked before they are spent.
-  const double budget = choose_parameter(get_parameter(np, internal_np::memory_budget), default_memory_budget);
-  if(!(budget > 0.)) throw Bad_parameter("the memory budget must be positive");
   constexpr double bytes_per_patch = 2048., bytes_per_pair = 32.;
   const auto gib = [](double bytes) {
     std::ostringstream text;
@@ -357,7 +312,81 @@ Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, Triang
   return result;
 }
 
+} // namespace internal
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Builds the initial nonobtuse mesh of `input` into `output` (cleared first):
+/// the nonobtuse Marching Cubes of the thesis's chapter 4 on a grid of
+/// `resolution` cubes along the longest side of the input's bounding box.
+/// Output vertices lie at cube-edge midpoints and cube centres, exactly, so
+/// every angle lies in [35.26, 90] degrees exactly; the output is a manifold
+/// triangle mesh oriented like the input (with the inside test, each output
+/// component follows the orientation of the input component it comes from).
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{resolution} cubes along the longest side (default 100)
+///     \cgalParamType{`int`} \cgalParamNEnd
+///   \cgalParamNBegin{sign_source} `Sign_source::automatic` (default),
+///     `Sign_source::patches`, `Sign_source::winding_number` or
+///     `Sign_source::inside_test` (closed inputs only)
+///     \cgalParamType{`Sign_source`} \cgalParamNEnd
+///   \cgalParamNBegin{number_of_threads} threads of the self-intersection test and of the
+///     winding numbers (0, the default: one per core); the result does not depend on it
+///     \cgalParamType{`int`} \cgalParamNEnd
+///   \cgalParamNBegin{memory_budget} bytes the construction, and the stages
+///     after it, may use, as estimated from the patches of input triangles met
+///     by the grid (about 2 KiB each, measured peak); a `double`, default
+///     `default_memory_budget` (4 GiB). Beyond it `Memory_budget_exceeded` is
+///     thrown before the mesh is built.
+///     \cgalParamType{`double`} \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map} the points of `input`; default its internal point map
+///     \cgalParamType{a model of `ReadWritePropertyMap` (`ReadablePropertyMap` for a mesh only read) with the vertex descriptors as keys and points with double coordinates as values} \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// `np_out` may hold the `vertex_point_map` of `output`, through which its points are written.
+/// The points must have double coordinates (see `deform_to_fit()`).
+///
+/// Throws `Bad_parameter` for a resolution outside [1, 1024] or a budget that
+/// is not positive; `Bad_input` for a flat input, an input too small or too
+/// far from the origin for exact grid coordinates, sheets closer together
+/// than a cube, or an inside test asked on an open input; and
+/// `Memory_budget_exceeded` (a `Bad_input`) as said above.
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters,
+          typename OutputNamedParameters = CGAL::parameters::Default_named_parameters>
+Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, TriangleMesh& output,
+                                               const NamedParameters& np = CGAL::parameters::default_values(),
+                                               const OutputNamedParameters& np_out = CGAL::parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const int resolution = choose_parameter(get_parameter(np, internal_np::resolution), 100);
+  const Sign_source source = choose_parameter(get_parameter(np, internal_np::sign_source), Sign_source::automatic);
+  const int threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 0);
+  if(threads < 0) throw Bad_parameter("the number of threads must not be negative");
+  const double budget = choose_parameter(get_parameter(np, internal_np::memory_budget), default_memory_budget);
+  if(!(budget > 0.)) throw Bad_parameter("the memory budget must be positive");
+  return internal::nonobtuse_marching_cubes_with(
+      input, choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                              get_const_property_map(CGAL::vertex_point, input)),
+      output, choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
+                               get_property_map(CGAL::vertex_point, output)),
+      resolution, source, threads, budget);
+}
+
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
+
+#if defined(CGAL_NONOBTUSE_REMESHING_COMPILED) && !defined(CGAL_NONOBTUSE_REMESHING_INSTANTIATE_MARCHING_CUBES)
+#include <CGAL/Nonobtuse_remeshing/internal/compiled_surface_mesh.h>
+namespace CGAL {
+namespace Nonobtuse_remeshing {
+namespace internal {
+extern template Marching_cubes_result nonobtuse_marching_cubes_with(const Compiled_mesh&, Compiled_point_map,
+                                                                    Compiled_mesh&, Compiled_point_map, int,
+                                                                    Sign_source, int, double);
+} // namespace internal
+} // namespace Nonobtuse_remeshing
+} // namespace CGAL
+#endif
 
 #endif // CGAL_NONOBTUSE_REMESHING_NONOBTUSE_MARCHING_CUBES_H

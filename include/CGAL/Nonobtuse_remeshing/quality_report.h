@@ -93,49 +93,24 @@ struct Quality_report
   boost::optional<Distance_report> distance;
 };
 
-/// \ingroup PkgNonobtuseRemeshingRef
-/// Computes the quality report of the triangle mesh `mesh` (a
-/// `CGAL::Surface_mesh` or any model of `FaceListGraph`). If `reference` is
-/// not null, the distances to it are computed too.
-///
-/// Throws `Bad_parameter` for a parameter out of range, and `Bad_input`
-/// unless `mesh` and `reference` are triangle meshes and the reference's
-/// bounding box is not a point.
-///
-/// \cgalNamedParamsBegin
-///   \cgalParamNBegin{min_angle, max_angle} the bounds to certify (default 30, 90) \cgalParamNEnd
-///   \cgalParamNBegin{maximum_self_intersections} cap on the counted self-intersecting
-///     face pairs (default 1000)
-///     \cgalParamType{`std::size_t`} \cgalParamNEnd
-///   \cgalParamNBegin{hausdorff_relative_error} error bound of the Hausdorff distances,
-///     as a fraction of the reference's bounding-box diagonal (default 1e-4)
-///     \cgalParamType{`double`} \cgalParamNEnd
-/// \cgalNamedParamsEnd
-template <typename TriangleMesh,
-          typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Quality_report quality_report(const TriangleMesh& mesh,
-                              const std::common_type_t<TriangleMesh>* reference = nullptr,
-                              const NamedParameters& np = CGAL::parameters::default_values())
+namespace internal {
+
+// quality_report() once its parameters are read and `mesh` certified: one
+// instantiation per mesh type.
+template <typename TriangleMesh>
+Quality_report quality_report_with(
+    const TriangleMesh& mesh, const TriangleMesh* reference, std::size_t cap, double hausdorff_error,
+    const Angle_certificate<typename boost::graph_traits<TriangleMesh>::face_descriptor>& certificate)
 {
   namespace PMP = Polygon_mesh_processing;
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
-  const std::size_t cap =
-      choose_parameter(get_parameter(np, internal_np::maximum_self_intersections), std::size_t(1000));
-  if(cap < 1 || cap >= (std::numeric_limits<unsigned>::max)())
-    throw Bad_parameter("maximum_self_intersections must be between 1 and 2^32 - 2");
-  const double hausdorff_error = choose_parameter(get_parameter(np, internal_np::hausdorff_relative_error), 1e-4);
-  if(!(hausdorff_error > 0.)) throw Bad_parameter("the Hausdorff error bound must be positive");
-
   Quality_report r;
   r.vertices = vertices(mesh).size();  // live elements: num_*() of a Surface_mesh count removed ones
   r.edges = edges(mesh).size();
   r.faces = faces(mesh).size();
   r.euler_characteristic = long(r.vertices) - long(r.edges) + long(r.faces);
 
-  const auto certificate = certify_angle_bounds(mesh, np);
   r.min_bound = certificate.min_bound;
   r.max_bound = certificate.max_bound;
   r.bounds_exact = certificate.bounds_exact;
@@ -172,18 +147,67 @@ Quality_report quality_report(const TriangleMesh& mesh,
 
   r.self_intersections_cap = cap;
   // ask for one more than the cap: finding it is what proves the cap was hit
-  PMP::self_intersections(faces(mesh), mesh, internal::Counting_iterator{&r.self_intersections},
+  PMP::self_intersections(faces(mesh), mesh, Counting_iterator{&r.self_intersections},
                           CGAL::parameters::maximum_number(unsigned(r.self_intersections_cap + 1)));
   r.self_intersections_capped = (r.self_intersections > r.self_intersections_cap);
   r.self_intersections = (std::min)(r.self_intersections, r.self_intersections_cap);
 
-  r.bbox_diagonal = internal::bbox_diagonal(mesh);
+  r.bbox_diagonal = bbox_diagonal(mesh);
   if(reference != nullptr)
-    r.distance = internal::distance_report<Distance_report>(mesh, *reference, hausdorff_error);
+    r.distance = distance_report<Distance_report>(mesh, *reference, hausdorff_error);
   return r;
+}
+
+} // namespace internal
+
+/// \ingroup PkgNonobtuseRemeshingRef
+/// Computes the quality report of the triangle mesh `mesh` (a
+/// `CGAL::Surface_mesh` or any model of `FaceListGraph`). If `reference` is
+/// not null, the distances to it are computed too.
+///
+/// Throws `Bad_parameter` for a parameter out of range, and `Bad_input`
+/// unless `mesh` and `reference` are triangle meshes and the reference's
+/// bounding box is not a point.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{min_angle, max_angle} the bounds to certify (default 30, 90) \cgalParamNEnd
+///   \cgalParamNBegin{maximum_self_intersections} cap on the counted self-intersecting
+///     face pairs (default 1000)
+///     \cgalParamType{`std::size_t`} \cgalParamNEnd
+///   \cgalParamNBegin{hausdorff_relative_error} error bound of the Hausdorff distances,
+///     as a fraction of the reference's bounding-box diagonal (default 1e-4)
+///     \cgalParamType{`double`} \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Quality_report quality_report(const TriangleMesh& mesh,
+                              const std::common_type_t<TriangleMesh>* reference = nullptr,
+                              const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const std::size_t cap =
+      choose_parameter(get_parameter(np, internal_np::maximum_self_intersections), std::size_t(1000));
+  if(cap < 1 || cap >= (std::numeric_limits<unsigned>::max)())
+    throw Bad_parameter("maximum_self_intersections must be between 1 and 2^32 - 2");
+  const double hausdorff_error = choose_parameter(get_parameter(np, internal_np::hausdorff_relative_error), 1e-4);
+  if(!(hausdorff_error > 0.)) throw Bad_parameter("the Hausdorff error bound must be positive");
+  return internal::quality_report_with(mesh, reference, cap, hausdorff_error, certify_angle_bounds(mesh, np));
 }
 
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
+
+#if defined(CGAL_NONOBTUSE_REMESHING_COMPILED) && !defined(CGAL_NONOBTUSE_REMESHING_INSTANTIATE_QUALITY_REPORT)
+#include <CGAL/Nonobtuse_remeshing/internal/compiled_surface_mesh.h>
+namespace CGAL {
+namespace Nonobtuse_remeshing {
+namespace internal {
+extern template Quality_report quality_report_with(const Compiled_mesh&, const Compiled_mesh*, std::size_t, double,
+                                                   const Angle_certificate<Compiled_mesh::Face_index>&);
+} // namespace internal
+} // namespace Nonobtuse_remeshing
+} // namespace CGAL
+#endif
 
 #endif // CGAL_NONOBTUSE_REMESHING_QUALITY_REPORT_H

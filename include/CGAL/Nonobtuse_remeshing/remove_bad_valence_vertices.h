@@ -19,6 +19,32 @@
 namespace CGAL {
 namespace Nonobtuse_remeshing {
 
+namespace internal {
+
+// remove_bad_valence_vertices() once its parameters are read: one
+// instantiation per mesh type and point map.
+template <typename TriangleMesh, typename VertexPointMap>
+Bad_valence_removal_statistics remove_bad_valence_vertices_with(TriangleMesh& mesh, VertexPointMap vpm, int k,
+                                                                bool split)
+{
+  const auto start = std::chrono::steady_clock::now();
+  if(!is_triangle_mesh(mesh)) throw Bad_input("remove_bad_valence_vertices: not a triangle mesh");
+  if(!certify_angle_bounds(mesh, CGAL::parameters::vertex_point_map(vpm)).is_certified())
+    throw Bad_input("remove_bad_valence_vertices needs a mesh certified in [30, 90] degrees");
+
+  Bad_valence_removal_statistics stats;
+  stats.before = count_bad_valences(mesh);
+  stats.vertices_before = vertices(mesh).size();
+  Bad_valence_removal<TriangleMesh, VertexPointMap> removal(mesh, vpm, k, split, stats);
+  removal.run();
+  stats.after = count_bad_valences(mesh);
+  stats.vertices_after = vertices(mesh).size();
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return stats;
+}
+
+} // namespace internal
+
 /// \ingroup PkgNonobtuseRemeshingRef
 /// Removes bad-valence vertices from `mesh`, whose angles must lie in
 /// [30, 90] degrees (the initial mesh's do), as the thesis's section 5.7
@@ -57,28 +83,27 @@ Bad_valence_removal_statistics remove_bad_valence_vertices(TriangleMesh& mesh,
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  const auto start = std::chrono::steady_clock::now();
   const bool split = choose_parameter(get_parameter(np, internal_np::vertex_split), true);
   const int k = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), 2);
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_property_map(CGAL::vertex_point, mesh));
   if(k < 1 || k > 16) throw Bad_parameter("the drum subdivisions k must lie in [1, 16]");
-  if(!is_triangle_mesh(mesh)) throw Bad_input("remove_bad_valence_vertices: not a triangle mesh");
-  if(!certify_angle_bounds(mesh, CGAL::parameters::vertex_point_map(vpm)).is_certified())
-    throw Bad_input("remove_bad_valence_vertices needs a mesh certified in [30, 90] degrees");
-
-  Bad_valence_removal_statistics stats;
-  stats.before = count_bad_valences(mesh);
-  stats.vertices_before = vertices(mesh).size();
-  internal::Bad_valence_removal<TriangleMesh, std::remove_const_t<decltype(vpm)> > removal(mesh, vpm, k, split, stats);
-  removal.run();
-  stats.after = count_bad_valences(mesh);
-  stats.vertices_after = vertices(mesh).size();
-  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return stats;
+  return internal::remove_bad_valence_vertices_with(mesh, vpm, k, split);
 }
 
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
+
+#if defined(CGAL_NONOBTUSE_REMESHING_COMPILED) && !defined(CGAL_NONOBTUSE_REMESHING_INSTANTIATE_VALENCE)
+#include <CGAL/Nonobtuse_remeshing/internal/compiled_surface_mesh.h>
+namespace CGAL {
+namespace Nonobtuse_remeshing {
+namespace internal {
+extern template Bad_valence_removal_statistics remove_bad_valence_vertices_with(Compiled_mesh&, Compiled_point_map,
+                                                                                int, bool);
+} // namespace internal
+} // namespace Nonobtuse_remeshing
+} // namespace CGAL
+#endif
 
 #endif // CGAL_NONOBTUSE_REMESHING_REMOVE_BAD_VALENCE_VERTICES_H

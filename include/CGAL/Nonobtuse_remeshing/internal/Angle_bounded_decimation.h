@@ -291,8 +291,39 @@ private:
   std::chrono::steady_clock::time_point start_;
 };
 
+// The decimation towards `targets` once its parameters are read, the full
+// mesh `reference` being the relaxation's target and `level` called at each
+// target (see Angle_bounded_decimation::run()): one instantiation per mesh
+// type and point maps, whatever the parameters and the visitor.
+template <typename TriangleMesh, typename VertexPointMap, typename ReferencePointMap>
+Angle_bounded_decimation_statistics angle_bounded_decimation_with(
+    TriangleMesh& mesh, VertexPointMap vpm, const Angle_bounded_decimation_options& o, double diagonal,
+    const std::vector<std::size_t>& targets, const TriangleMesh& reference, ReferencePointMap reference_vpm,
+    const Keep_going_function<Angle_bounded_decimation_statistics>& keep_going,
+    const std::function<void(std::size_t, bool, const Angle_bounded_decimation_statistics&)>& level)
+{
+  auto visitor = keep_going_relay(keep_going);
+  Angle_bounded_decimation<TriangleMesh, VertexPointMap, decltype(visitor)> decimation(mesh, vpm, o, diagonal, visitor);
+  return decimation.run(targets, reference, reference_vpm, level);
+}
+
 } // namespace internal
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
+
+#if defined(CGAL_NONOBTUSE_REMESHING_COMPILED) && !defined(CGAL_NONOBTUSE_REMESHING_INSTANTIATE_DECIMATION)
+#include <CGAL/Nonobtuse_remeshing/internal/compiled_surface_mesh.h>
+namespace CGAL {
+namespace Nonobtuse_remeshing {
+namespace internal {
+extern template Angle_bounded_decimation_statistics angle_bounded_decimation_with(
+    Compiled_mesh&, Compiled_point_map, const Angle_bounded_decimation_options&, double,
+    const std::vector<std::size_t>&, const Compiled_mesh&, Compiled_point_map,
+    const Keep_going_function<Angle_bounded_decimation_statistics>&,
+    const std::function<void(std::size_t, bool, const Angle_bounded_decimation_statistics&)>&);
+} // namespace internal
+} // namespace Nonobtuse_remeshing
+} // namespace CGAL
+#endif
 
 #endif // CGAL_NONOBTUSE_REMESHING_INTERNAL_ANGLE_BOUNDED_DECIMATION_H

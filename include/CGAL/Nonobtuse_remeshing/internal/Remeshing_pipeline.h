@@ -91,43 +91,52 @@ inline void describe_progress(Remeshing_progress& p, const Angle_bounded_decimat
   p.decimation = &s;
 }
 
-// The pipeline of nonobtuse_remesh() on meshes whose points are in their
-// internal point maps (any vertex_point_map in `np` is not used).
-template <typename TriangleMesh, typename NamedParameters>
-Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& input, TriangleMesh& output,
-                                                         const NamedParameters& np)
+// The parameters of nonobtuse_remesh(), read and checked, and its visitor
+// behind fixed types: what the pipeline's core needs.
+struct Remeshing_settings
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
+  Remeshing_stage last = Remeshing_stage::decimation;
+  bool valence_cleanup = true;
+  bool vertex_split = true;
+  int drum_subdivisions = 2;
+  Deform_to_fit_options fit;
+  int quadric_rings = 0;
+  std::size_t target_vertices = 0;
+  double max_distance = 0.;
+  double oversampling = default_oversampling;
+  int resolution = 100;  // when neither a target nor a distance gives it
+  bool keep_topology = false;
+  int max_resolution = 0;
+  Angle_bounded_decimation_options decimation;
+  bool has_max_error = false;
+  Sign_source signs = Sign_source::automatic;
+  double memory_budget = default_memory_budget;
+  int threads = 0;
+  std::function<bool(const Remeshing_progress&)> keep_going;
+  std::function<void(Remeshing_stage)> stage_started;
+  std::function<void(Remeshing_stage, double)> stage_finished;
+};
+
+// The pipeline of nonobtuse_remesh() on meshes whose points are in their
+// internal point maps, once its parameters are read: one instantiation per
+// mesh type, whatever the parameters and the visitor.
+template <typename TriangleMesh>
+Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, TriangleMesh& output,
+                                                     const Remeshing_settings& settings)
+{
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   const auto seconds_since = [](Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
   };
   clear(output);
-  if(num_faces(input) == 0 || !is_triangle_mesh(input))
-    throw Bad_input("nonobtuse_remesh: the input must be a non-empty triangle mesh");
-
   Nonobtuse_remeshing_statistics stats;
-  const Remeshing_stage last =
-      choose_parameter(get_parameter(np, internal_np::stop_after), Remeshing_stage::decimation);
-  const bool valence_cleanup = choose_parameter(get_parameter(np, internal_np::valence_cleanup), true);
-  const int k = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), 2);
-  if(last == Remeshing_stage::valence && !valence_cleanup)
-    throw Bad_parameter("stopping after the valence stage contradicts skipping it");
-  int rings = 0;
-  internal::deform_to_fit_options(np, rings);  // the fit's parameters are checked before any work
-  stats.target_vertices = choose_parameter(get_parameter(np, internal_np::target_vertices), std::size_t(0));
-  const double max_distance = choose_parameter(get_parameter(np, internal_np::max_distance), 0.);
-  if(!(max_distance >= 0. && max_distance <= 1.))
-    throw Bad_parameter("the maximum distance must lie in (0, 1], a fraction of the input's diagonal (0: no bound)");
-  if(max_distance > 0. && stats.target_vertices > 0)
-    throw Bad_parameter("give one of a target vertex count and a maximum distance");
-  if(max_distance > 0. && (last == Remeshing_stage::initial_mesh || last == Remeshing_stage::valence))
-    throw Bad_parameter("a maximum distance needs the fit: stop after the fit or the decimation");
-  stats.oversampling = choose_parameter(get_parameter(np, internal_np::oversampling), default_oversampling);
-  if(!(stats.oversampling >= 1. && stats.oversampling <= 16.))
-    throw Bad_parameter("the oversampling must lie in [1, 16]");
+  const Remeshing_stage last = settings.last;
+  const bool valence_cleanup = settings.valence_cleanup;
+  const int k = settings.drum_subdivisions;
+  const double max_distance = settings.max_distance;
+  stats.target_vertices = settings.target_vertices;
+  stats.oversampling = settings.oversampling;
   // with a target, the initial mesh is built for `oversampling` times its vertices
   const std::size_t initial_vertices = std::size_t(std::llround(stats.oversampling * double(stats.target_vertices)));
   const double input_diagonal = bbox_diagonal(input);
@@ -135,37 +144,30 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
   stats.distance.measurement_error = max_distance / 50.;
   stats.resolution = stats.target_vertices > 0 ? resolution_for_target_vertices(input, initial_vertices)
                      : max_distance > 0.       ? resolution_for_max_distance(input, max_distance, input_diagonal)
-                                               : choose_parameter(get_parameter(np, internal_np::resolution), 100);
+                                               : settings.resolution;
   if(stats.resolution < 1 || stats.resolution > 1024)
     throw Bad_parameter("the resolution must lie in [1, 1024]");
-  stats.keep_topology = choose_parameter(get_parameter(np, internal_np::keep_topology),
-                                         stats.target_vertices > 0 || max_distance > 0.);
-  const int max_resolution = choose_parameter(get_parameter(np, internal_np::max_resolution), 0);
-  if(max_resolution < 0 || max_resolution > 1024)
-    throw Bad_parameter("the maximum resolution must lie in [1, 1024] (0: twice the resolution)");
-  const internal::Angle_bounded_decimation_options decimation_options = internal::decimation_options(np);
-  const bool has_max_error =
-      !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::max_error_t>::value;
-  const Sign_source signs = choose_parameter(get_parameter(np, internal_np::sign_source), Sign_source::automatic);
-  const double budget = choose_parameter(get_parameter(np, internal_np::memory_budget), default_memory_budget);
-  if(!(budget > 0.)) throw Bad_parameter("the memory budget must be positive");
-  const int threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 0);
+  stats.keep_topology = settings.keep_topology;
+  const int max_resolution = settings.max_resolution;
+  const internal::Angle_bounded_decimation_options& decimation_options = settings.decimation;
+  const bool has_max_error = settings.has_max_error;
+  const Sign_source signs = settings.signs;
+  const double budget = settings.memory_budget;
+  const int threads = settings.threads;
 
-  auto given = choose_parameter(get_parameter(np, internal_np::remeshing_visitor), Default_remeshing_visitor());
-  auto& visitor = internal::visitor_reference(given);
   // Asks the visitor at a stage boundary; false ends the pipeline there.
   const auto proceed = [&](Remeshing_stage stage, double fraction) {
     Remeshing_progress p;
     p.stage = stage;
     p.fraction = fraction;
-    if(!visitor.keep_going(p)) stats.cancelled = true;
+    if(!settings.keep_going(p)) stats.cancelled = true;
     return !stats.cancelled;
   };
   // The fit's and the decimation's progress, relayed to the visitor.
-  auto relay = keep_going_relay([&visitor](const auto& s) {
+  auto relay = keep_going_relay([&settings](const auto& s) {
     Remeshing_progress p;
     describe_progress(p, s);
-    return visitor.keep_going(p);
+    return settings.keep_going(p);
   });
   const auto finish = [&]() {
     if(num_faces(output) > 0) {
@@ -213,7 +215,7 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
     // coarsest among those). False when the visitor cancels.
     const auto initial_stage = [&](int resolution) {
       if(!proceed(Remeshing_stage::initial_mesh, 0.)) return false;
-      visitor.stage_started(Remeshing_stage::initial_mesh);
+      settings.stage_started(Remeshing_stage::initial_mesh);
       const auto stage_start = Clock::now();
       if(resolution == 0) {
         stats.initial_mesh = build(stats.resolution, output);
@@ -292,7 +294,7 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
       stats.topology.seconds = comparing;
       stats.initial_mesh.patch_faces.clear();
       stats.initial_mesh.face_patch.clear();
-      visitor.stage_finished(Remeshing_stage::initial_mesh, seconds_since(stage_start));
+      settings.stage_finished(Remeshing_stage::initial_mesh, seconds_since(stage_start));
       return !stats.cancelled;
     };
 
@@ -304,30 +306,30 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
       // Section 5.7: bad valences out.
       if(valence_cleanup) {
         if(!proceed(Remeshing_stage::valence, 0.)) return false;
-        visitor.stage_started(Remeshing_stage::valence);
+        settings.stage_started(Remeshing_stage::valence);
         const auto stage_start = Clock::now();
         stats.valence = remove_bad_valence_vertices(
             output, parameters::combine(
-                        parameters::vertex_split(choose_parameter(get_parameter(np, internal_np::vertex_split), true)),
+                        parameters::vertex_split(settings.vertex_split),
                         parameters::drum_subdivisions(k)));
         stats.valence_run = true;
         internal::collect_garbage_of(output, 0);
-        visitor.stage_finished(Remeshing_stage::valence, seconds_since(stage_start));
+        settings.stage_finished(Remeshing_stage::valence, seconds_since(stage_start));
         if(last == Remeshing_stage::valence) return false;
       }
       // Chapter 5: deform-to-fit, with the caller's fit parameters (the
       // relay takes the place of a fit_visitor among them).
       if(!proceed(Remeshing_stage::fit, 0.)) return false;
-      visitor.stage_started(Remeshing_stage::fit);
+      settings.stage_started(Remeshing_stage::fit);
       const auto stage_start = Clock::now();
-      stats.fit = deform_to_fit(output, *surface,
-                                parameters::combine(np, parameters::fit_visitor(std::ref(relay)),
-                                                    CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, output))));
+      stats.fit = deform_to_fit_with(output, get(CGAL::vertex_point, output), *surface,
+                                     get_const_property_map(CGAL::vertex_point, *surface), settings.fit,
+                                     settings.quadric_rings, keep_going_function<Deform_to_fit_statistics>(relay));
       fitting += stats.fit.seconds;
       stats.fit.seconds = fitting;
       stats.fit_run = true;
       if(stats.fit.cancelled) stats.cancelled = true;
-      visitor.stage_finished(Remeshing_stage::fit, seconds_since(stage_start));
+      settings.stage_finished(Remeshing_stage::fit, seconds_since(stage_start));
       return last != Remeshing_stage::fit && !stats.cancelled;
     };
 
@@ -388,7 +390,7 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
     const bool over_target =
         stats.target_vertices > 0 && double(vertices(output).size()) > 1.1 * double(stats.target_vertices);
     if(!(over_target || max_distance > 0.) || !proceed(Remeshing_stage::decimation, 0.)) return finish();
-    visitor.stage_started(Remeshing_stage::decimation);
+    settings.stage_started(Remeshing_stage::decimation);
     const auto stage_start = Clock::now();
     if(max_distance > 0.) {
       stats.decimation = decimate_within_distance(output, *surface, input_diagonal, decimation_options,
@@ -404,15 +406,15 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
         const int coarse = resolution_for_target_vertices(input, stats.target_vertices);
         o.max_error = stats.initial_mesh.cube_size * double(stats.resolution) / double(coarse) / diagonal;
       }
-      Angle_bounded_decimation<TriangleMesh, std::remove_const_t<decltype(points)>, decltype(relay)>
-          decimation(output, points, o, diagonal, relay);
-      stats.decimation = decimation.run({stats.target_vertices}, *surface, get(CGAL::vertex_point, *surface),
-                                        [](std::size_t, bool, const Angle_bounded_decimation_statistics&) {});
+      stats.decimation = angle_bounded_decimation_with(
+          output, points, o, diagonal, {stats.target_vertices}, *surface, get(CGAL::vertex_point, *surface),
+          keep_going_function<Angle_bounded_decimation_statistics>(relay),
+          [](std::size_t, bool, const Angle_bounded_decimation_statistics&) {});
       internal::collect_garbage_of(output, 0);
     }
     stats.decimation_run = true;
     if(stats.decimation.stop_reason == Decimation_stop_reason::cancelled) stats.cancelled = true;
-    visitor.stage_finished(Remeshing_stage::decimation, seconds_since(stage_start));
+    settings.stage_finished(Remeshing_stage::decimation, seconds_since(stage_start));
     return finish();
   } catch(...) {
     clear(output);
@@ -420,8 +422,80 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
   }
 }
 
+// The parameters of nonobtuse_remesh() read and checked (Bad_parameter for
+// one out of range); the settings call `visitor`, which must outlive them.
+template <typename NamedParameters, typename Visitor>
+Remeshing_settings remeshing_settings(const NamedParameters& np, Visitor& visitor)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Remeshing_settings s;
+  s.last = choose_parameter(get_parameter(np, internal_np::stop_after), s.last);
+  s.valence_cleanup = choose_parameter(get_parameter(np, internal_np::valence_cleanup), s.valence_cleanup);
+  s.vertex_split = choose_parameter(get_parameter(np, internal_np::vertex_split), s.vertex_split);
+  s.drum_subdivisions = choose_parameter(get_parameter(np, internal_np::drum_subdivisions), s.drum_subdivisions);
+  if(s.last == Remeshing_stage::valence && !s.valence_cleanup)
+    throw Bad_parameter("stopping after the valence stage contradicts skipping it");
+  s.fit = deform_to_fit_options(np, s.quadric_rings);  // the fit's parameters are checked before any work
+  s.target_vertices = choose_parameter(get_parameter(np, internal_np::target_vertices), s.target_vertices);
+  s.max_distance = choose_parameter(get_parameter(np, internal_np::max_distance), s.max_distance);
+  if(!(s.max_distance >= 0. && s.max_distance <= 1.))
+    throw Bad_parameter("the maximum distance must lie in (0, 1], a fraction of the input's diagonal (0: no bound)");
+  if(s.max_distance > 0. && s.target_vertices > 0)
+    throw Bad_parameter("give one of a target vertex count and a maximum distance");
+  if(s.max_distance > 0. && (s.last == Remeshing_stage::initial_mesh || s.last == Remeshing_stage::valence))
+    throw Bad_parameter("a maximum distance needs the fit: stop after the fit or the decimation");
+  s.oversampling = choose_parameter(get_parameter(np, internal_np::oversampling), s.oversampling);
+  if(!(s.oversampling >= 1. && s.oversampling <= 16.))
+    throw Bad_parameter("the oversampling must lie in [1, 16]");
+  s.resolution = choose_parameter(get_parameter(np, internal_np::resolution), s.resolution);
+  s.keep_topology = choose_parameter(get_parameter(np, internal_np::keep_topology),
+                                     s.target_vertices > 0 || s.max_distance > 0.);
+  s.max_resolution = choose_parameter(get_parameter(np, internal_np::max_resolution), s.max_resolution);
+  if(s.max_resolution < 0 || s.max_resolution > 1024)
+    throw Bad_parameter("the maximum resolution must lie in [1, 1024] (0: twice the resolution)");
+  s.decimation = decimation_options(np);
+  s.has_max_error = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::max_error_t>::value;
+  s.signs = choose_parameter(get_parameter(np, internal_np::sign_source), s.signs);
+  s.memory_budget = choose_parameter(get_parameter(np, internal_np::memory_budget), s.memory_budget);
+  if(!(s.memory_budget > 0.)) throw Bad_parameter("the memory budget must be positive");
+  s.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), s.threads);
+  s.keep_going = keep_going_function<Remeshing_progress>(visitor);
+  s.stage_started = [&visitor](Remeshing_stage stage) { visitor.stage_started(stage); };
+  s.stage_finished = [&visitor](Remeshing_stage stage, double seconds) { visitor.stage_finished(stage, seconds); };
+  return s;
+}
+
+// The pipeline of nonobtuse_remesh() on meshes whose points are in their
+// internal point maps (any vertex_point_map in `np` is not used).
+template <typename TriangleMesh, typename NamedParameters>
+Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& input, TriangleMesh& output,
+                                                         const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  clear(output);
+  if(num_faces(input) == 0 || !is_triangle_mesh(input))
+    throw Bad_input("nonobtuse_remesh: the input must be a non-empty triangle mesh");
+  // a visitor given by value is copied, one given with std::ref is used in place
+  auto given = choose_parameter(get_parameter(np, internal_np::remeshing_visitor), Default_remeshing_visitor());
+  return nonobtuse_remesh_with(input, output, remeshing_settings(np, visitor_reference(given)));
+}
+
 } // namespace internal
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
+
+#if defined(CGAL_NONOBTUSE_REMESHING_COMPILED) && !defined(CGAL_NONOBTUSE_REMESHING_INSTANTIATE_PIPELINE)
+#include <CGAL/Nonobtuse_remeshing/internal/compiled_surface_mesh.h>
+namespace CGAL {
+namespace Nonobtuse_remeshing {
+namespace internal {
+extern template Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const Compiled_mesh&, Compiled_mesh&,
+                                                                     const Remeshing_settings&);
+} // namespace internal
+} // namespace Nonobtuse_remeshing
+} // namespace CGAL
+#endif
 
 #endif // CGAL_NONOBTUSE_REMESHING_INTERNAL_REMESHING_PIPELINE_H

@@ -99,8 +99,6 @@ Angle_bounded_decimation_statistics decimate_within_distance(TriangleMesh& mesh,
     std::vector<Soup> levels;  // finest first: the mesh the pass starts from, then each level reached
     levels.push_back(soup_of(mesh));
     levels.back().statistics = result;
-    Angle_bounded_decimation<TriangleMesh, std::remove_const_t<decltype(points)>, Relay> decimation(
-        mesh, points, options, diagonal, relay);
     const std::size_t before = vertices(mesh).size();
     const auto add = [&result](Angle_bounded_decimation_statistics s) {  // this pass's onto the passes' before
       s.vertices_before = result.vertices_before;
@@ -117,12 +115,14 @@ Angle_bounded_decimation_statistics decimate_within_distance(TriangleMesh& mesh,
       return s;
     };
     Angle_bounded_decimation_statistics run =
-        add(decimation.run(targets, surface, get(CGAL::vertex_point, surface),
-                           [&](std::size_t, bool reached, const Angle_bounded_decimation_statistics& s) {
-                             if(!reached) return;
-                             levels.push_back(soup_of(mesh));
-                             levels.back().statistics = add(s);
-                           }));
+        add(angle_bounded_decimation_with(mesh, points, options, diagonal, targets, surface,
+                                          get(CGAL::vertex_point, surface),
+                                          keep_going_function<Angle_bounded_decimation_statistics>(relay),
+                                          [&](std::size_t, bool reached, const Angle_bounded_decimation_statistics& s) {
+                                            if(!reached) return;
+                                            levels.push_back(soup_of(mesh));
+                                            levels.back().statistics = add(s);
+                                          }));
     collect_garbage_of(mesh, 0);
     bounds.levels += levels.size();
     if(run.stop_reason == Decimation_stop_reason::cancelled) {  // a certified mesh all the same

@@ -63,6 +63,18 @@ Keep_going_relay<Ask> keep_going_relay(Ask ask)
   return Keep_going_relay<Ask>{ask};
 }
 
+// A visitor's keep_going() behind a fixed type: the stages' cores take this,
+// so that they are instantiated once per mesh type whatever the visitor
+// (compiled_surface_mesh.h).
+template <typename Statistics>
+using Keep_going_function = std::function<bool(const Statistics&)>;
+
+template <typename Statistics, typename Visitor>
+Keep_going_function<Statistics> keep_going_function(Visitor& visitor)
+{
+  return [&visitor](const Statistics& s) { return bool(visitor.keep_going(s)); };
+}
+
 } // namespace internal
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
