@@ -140,8 +140,7 @@ public:
       if(options_.distance_guard) {
         for(const auto& sample : samples_) guard_points_.push_back(sample.first);
         add_face_samples(input_, spacing, guard_points_);
-        std::vector<bool> unused;
-        start_mesh_side_ = mesh_side(*this, 0., nullptr, unused);
+        start_mesh_side_ = mesh_side(*this, 0., nullptr);
       }
       if(options_.attract_features)
         owners_ = std::make_unique<Feature_sample_owners>(samples_, on_input_border_, spacing);
@@ -695,12 +694,11 @@ private:
   template <typename Fit>
   friend struct Start_point_map;
   template <typename Fit, typename Points>
-  friend double input_side(Fit& fit, const Points& points, double limit, std::vector<std::size_t>* far,
-                           std::vector<bool>& chosen);
+  friend double input_side(Fit& fit, const Points& points, double limit, Vertex_list* far);
   template <typename Fit>
-  friend double mesh_side(Fit& fit, double limit, std::vector<std::size_t>* far, std::vector<bool>& chosen);
+  friend double mesh_side(Fit& fit, double limit, Vertex_list* far);
   template <typename Fit>
-  friend double guard_distance(Fit& fit, double limit, std::vector<std::size_t>* far);
+  friend double guard_distance(Fit& fit, double limit, Vertex_list* far);
   template <typename Fit>
   friend void guard_the_distance(Fit& fit);
 

@@ -73,15 +73,6 @@ struct Start_point_map
   friend Epick::Point_3 get(const Start_point_map& map, const key_type& v) { return map.at(v); }
 };
 
-// Adds vertex i to `far` once (`chosen` marks those added).
-inline void choose(std::size_t i, std::vector<std::size_t>* far, std::vector<bool>& chosen)
-{
-  if(far && !chosen[i]) {
-    chosen[i] = true;
-    far->push_back(i);
-  }
-}
-
 // The guard's input side: the farthest of the guard points (the input's
 // feature samples: its vertices, thinned to one per cell of the sample
 // spacing, and points along its sharp and border edges; and points on its
@@ -90,8 +81,7 @@ inline void choose(std::size_t i, std::vector<std::size_t>* far, std::vector<boo
 // farther than `limit`. Queries run on the fit's workers; the result does
 // not depend on their number.
 template <typename Fit, typename Points>
-double input_side(Fit& fit, const Points& points, double limit, std::vector<std::size_t>* far,
-                  std::vector<bool>& chosen)
+double input_side(Fit& fit, const Points& points, double limit, Vertex_list* far)
 {
   using Mesh = std::remove_reference_t<decltype(fit.mesh_)>;
   using Primitive = AABB_face_graph_triangle_primitive<Mesh, Points>;
@@ -107,8 +97,8 @@ double input_side(Fit& fit, const Points& points, double limit, std::vector<std:
   double farthest = 0.;
   for(const auto& n : nearest) {
     farthest = (std::max)(farthest, n.first);
-    if(n.first > limit)
-      for(auto v : vertices_around_face(halfedge(n.second, fit.mesh_), fit.mesh_)) choose(get(fit.index_, v), far, chosen);
+    if(far && n.first > limit)
+      for(auto v : vertices_around_face(halfedge(n.second, fit.mesh_), fit.mesh_)) far->add(get(fit.index_, v));
   }
   return farthest;
 }
@@ -117,7 +107,7 @@ double input_side(Fit& fit, const Points& points, double limit, std::vector<std:
 // are now, from the input (their closest input triangles are the fit's
 // hints); with `far`, also those farther than `limit`.
 template <typename Fit>
-double mesh_side(Fit& fit, double limit, std::vector<std::size_t>* far, std::vector<bool>& chosen)
+double mesh_side(Fit& fit, double limit, Vertex_list* far)
 {
   std::vector<double> from_mesh(fit.vertices_.size());
   fit.pool_.for_each(fit.vertices_.size(), [&](std::size_t i, int) {
@@ -127,7 +117,7 @@ double mesh_side(Fit& fit, double limit, std::vector<std::size_t>* far, std::vec
   double farthest = 0.;
   for(std::size_t i = 0; i < from_mesh.size(); ++i) {
     farthest = (std::max)(farthest, from_mesh[i]);
-    if(from_mesh[i] > limit) choose(i, far, chosen);
+    if(far && from_mesh[i] > limit) far->add(i);
   }
   return farthest;
 }
@@ -136,11 +126,10 @@ double mesh_side(Fit& fit, double limit, std::vector<std::size_t>* far, std::vec
 // guard measures it (both sides); with `far`, also the vertices near what
 // is farther than `limit`, in the order found.
 template <typename Fit>
-double guard_distance(Fit& fit, double limit, std::vector<std::size_t>* far)
+double guard_distance(Fit& fit, double limit, Vertex_list* far)
 {
-  std::vector<bool> chosen(fit.vertices_.size(), false);
-  const double from_input = input_side(fit, fit.points_, limit, far, chosen);
-  return (std::max)(from_input, mesh_side(fit, limit, far, chosen));
+  const double from_input = input_side(fit, fit.points_, limit, far);
+  return (std::max)(from_input, mesh_side(fit, limit, far));
 }
 
 // Where the fitted mesh is farther from the input than the mesh it started
@@ -159,13 +148,12 @@ void guard_the_distance(Fit& fit)
   const auto start = std::chrono::steady_clock::now();
   // the mesh the fit started from: its input side now, from the start
   // positions, its mesh side as measured when the fit started
-  std::vector<bool> unused;
-  const double limit = (std::max)(input_side(fit, Start_point_map<Fit>{&fit}, 0., nullptr, unused), fit.start_mesh_side_);
-  std::vector<std::size_t> far;
+  const double limit = (std::max)(input_side(fit, Start_point_map<Fit>{&fit}, 0., nullptr), fit.start_mesh_side_);
+  Vertex_list far(fit.vertices_.size());
   double distance = guard_distance(fit, limit, &far);
   std::size_t pairs = fit.stats_.intersecting_pairs;
   for(int round = 1; round <= 8 && distance > limit && !fit.stopped(); ++round) {
-    const std::vector<std::size_t> region = region_around(fit, far, round);
+    const std::vector<std::size_t> region = region_around(fit, far.indices, round);
     const Saved_region<Fit> saved(fit, region);
     std::size_t moves = 0;
     for(int pass = 0; pass < 10 && !fit.stopped(); ++pass)
@@ -176,14 +164,14 @@ void guard_the_distance(Fit& fit)
            fit.apply(i, best, false))
           ++moves;
       }
-    std::vector<std::size_t> still_far;
+    Vertex_list still_far(fit.vertices_.size());
     const double after = moves > 0 ? guard_distance(fit, limit, &still_far) : distance;
     const std::size_t pairs_after = moves > 0 && after < distance ? intersecting_pairs(fit).size() : pairs;
     if(after < distance && pairs_after <= pairs) {
       fit.stats_.guard_moves += moves;
       distance = after;
       pairs = pairs_after;
-      far.swap(still_far);
+      far = std::move(still_far);
       continue;
     }
     fit.stats_.moves -= moves;

@@ -59,27 +59,39 @@ std::vector<std::pair<typename Fit::face_descriptor, typename Fit::face_descript
   return by_index;
 }
 
+// Vertex indices among n, each added once, in the order added.
+struct Vertex_list
+{
+  explicit Vertex_list(std::size_t n) : chosen(n, false) {}
+  // false if i was added before
+  bool add(std::size_t i)
+  {
+    if(chosen[i]) return false;
+    chosen[i] = true;
+    indices.push_back(i);
+    return true;
+  }
+  std::vector<std::size_t> indices;
+  std::vector<bool> chosen;
+};
+
 // `seeds` (distinct vertex indices) and the `rings` rings of vertices
 // around them, the seeds first.
 template <typename Fit>
 std::vector<std::size_t> region_around(const Fit& fit, const std::vector<std::size_t>& seeds, int rings)
 {
   using vertex_descriptor = typename Fit::vertex_descriptor;
-  std::vector<bool> chosen(fit.vertices_.size(), false);
-  for(std::size_t i : seeds) chosen[i] = true;
-  std::vector<std::size_t> region = seeds, front = seeds;
+  Vertex_list region(fit.vertices_.size());
+  for(std::size_t i : seeds) region.add(i);
+  std::vector<std::size_t> front = seeds;
   for(int ring = 0; ring < rings; ++ring) {
     std::vector<std::size_t> next;
     for(std::size_t i : front)
       for(vertex_descriptor w : vertices_around_target(halfedge(fit.vertices_[i], fit.mesh_), fit.mesh_))
-        if(!chosen[get(fit.index_, w)]) {
-          chosen[get(fit.index_, w)] = true;
-          next.push_back(get(fit.index_, w));
-        }
-    region.insert(region.end(), next.begin(), next.end());
+        if(region.add(get(fit.index_, w))) next.push_back(get(fit.index_, w));
     front.swap(next);
   }
-  return region;
+  return region.indices;
 }
 
 // The points and closest input triangles of a region of the fit's vertices,
@@ -131,22 +143,17 @@ void untangle(Fit& fit)
   std::vector<std::pair<face_descriptor, face_descriptor> > pairs = intersecting_pairs(fit);
   fit.stats_.intersecting_pairs_found = pairs.size();
   for(int round = 1; round <= 5 && !pairs.empty() && !fit.stats_.budget_exhausted && !fit.stats_.cancelled; ++round) {
-    std::vector<bool> chosen(fit.vertices_.size(), false);
-    std::vector<std::size_t> own;
+    Vertex_list own(fit.vertices_.size());
     for(const auto& p : pairs)
       for(face_descriptor f : {p.first, p.second})
-        for(vertex_descriptor w : vertices_around_face(halfedge(f, fit.mesh_), fit.mesh_))
-          if(!chosen[get(fit.index_, w)]) {
-            chosen[get(fit.index_, w)] = true;
-            own.push_back(get(fit.index_, w));
-          }
-    const std::vector<std::size_t> region = region_around(fit, own, round);
+        for(vertex_descriptor w : vertices_around_face(halfedge(f, fit.mesh_), fit.mesh_)) own.add(get(fit.index_, w));
+    const std::vector<std::size_t> region = region_around(fit, own.indices, round);
     // Constrained smoothing of the region, kept unless it adds pairs; if
     // pairs are left, moves of the pairs' own vertices back towards the
     // initial mesh, kept only if they remove pairs. What is not kept is
     // rolled back to the certified state before it.
     if(untangle_attempt(fit, region, Fit::Goal::smooth, pairs, false)) continue;
-    untangle_attempt(fit, own, Fit::Goal::restore, pairs, true);
+    untangle_attempt(fit, own.indices, Fit::Goal::restore, pairs, true);
   }
   fit.stats_.intersecting_pairs = pairs.size();
   fit.stats_.untangling_seconds = fit.seconds_since(start);
