@@ -148,14 +148,20 @@ Deform_to_fit_statistics deform_to_fit(TriangleMesh& mesh, const TriangleMesh& i
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
 
-#if defined(CGAL_NONOBTUSE_REMESHING_COMPILED) && !defined(CGAL_NONOBTUSE_REMESHING_INSTANTIATE_FIT)
+// With NonobtuseRemeshing::Compiled (compiled_surface_mesh.h): the declarations
+// of its instantiations; src/compiled/deform_to_fit.cpp defines
+// CGAL_NONOBTUSE_REMESHING_INSTANTIATE_FIT, and there they are the instantiations.
+#ifdef CGAL_NONOBTUSE_REMESHING_COMPILED
 #include <CGAL/Nonobtuse_remeshing/internal/compiled_surface_mesh.h>
 namespace CGAL {
 namespace Nonobtuse_remeshing {
 namespace internal {
-extern template Deform_to_fit_statistics deform_to_fit_with(Compiled_mesh&, Compiled_point_map, const Compiled_mesh&,
-                                                            Compiled_point_map, const Deform_to_fit_options&, int,
-                                                            const Keep_going_function<Deform_to_fit_statistics>&);
+#ifndef CGAL_NONOBTUSE_REMESHING_INSTANTIATE_FIT
+extern
+#endif
+template Deform_to_fit_statistics deform_to_fit_with(Compiled_mesh&, Compiled_point_map, const Compiled_mesh&,
+                                                     Compiled_point_map, const Deform_to_fit_options&, int,
+                                                     const Keep_going_function<Deform_to_fit_statistics>&);
 } // namespace internal
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL

@@ -236,13 +236,22 @@ std::function<bool(const std::string&)> certifying_check(const TriangleMesh& mes
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
 
-#if defined(CGAL_NONOBTUSE_REMESHING_COMPILED) && !defined(CGAL_NONOBTUSE_REMESHING_INSTANTIATE_MESH_IO)
+// With NonobtuseRemeshing::Compiled (compiled_surface_mesh.h): the declarations
+// of its instantiations; src/compiled/mesh_io.cpp defines
+// CGAL_NONOBTUSE_REMESHING_INSTANTIATE_MESH_IO, and there they are the instantiations.
+#ifdef CGAL_NONOBTUSE_REMESHING_COMPILED
 #include <CGAL/Nonobtuse_remeshing/internal/compiled_surface_mesh.h>
 namespace CGAL {
 namespace Nonobtuse_remeshing {
-extern template void read_triangle_mesh(const std::string&, internal::Compiled_mesh&, Read_log&);
-extern template void write_mesh_atomically(const std::string&, const internal::Compiled_mesh&,
-                                           const std::function<bool(const std::string&)>&);
+#ifndef CGAL_NONOBTUSE_REMESHING_INSTANTIATE_MESH_IO
+extern
+#endif
+template void read_triangle_mesh(const std::string&, internal::Compiled_mesh&, Read_log&);
+#ifndef CGAL_NONOBTUSE_REMESHING_INSTANTIATE_MESH_IO
+extern
+#endif
+template void write_mesh_atomically(const std::string&, const internal::Compiled_mesh&,
+                                    const std::function<bool(const std::string&)>&);
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
 #endif

@@ -376,14 +376,20 @@ Marching_cubes_result nonobtuse_marching_cubes(const TriangleMesh& input, Triang
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
 
-#if defined(CGAL_NONOBTUSE_REMESHING_COMPILED) && !defined(CGAL_NONOBTUSE_REMESHING_INSTANTIATE_MARCHING_CUBES)
+// With NonobtuseRemeshing::Compiled (compiled_surface_mesh.h): the declarations
+// of its instantiations; src/compiled/nonobtuse_marching_cubes.cpp defines
+// CGAL_NONOBTUSE_REMESHING_INSTANTIATE_MARCHING_CUBES, and there they are the instantiations.
+#ifdef CGAL_NONOBTUSE_REMESHING_COMPILED
 #include <CGAL/Nonobtuse_remeshing/internal/compiled_surface_mesh.h>
 namespace CGAL {
 namespace Nonobtuse_remeshing {
 namespace internal {
-extern template Marching_cubes_result nonobtuse_marching_cubes_with(const Compiled_mesh&, Compiled_point_map,
-                                                                    Compiled_mesh&, Compiled_point_map, int,
-                                                                    Sign_source, int, double);
+#ifndef CGAL_NONOBTUSE_REMESHING_INSTANTIATE_MARCHING_CUBES
+extern
+#endif
+template Marching_cubes_result nonobtuse_marching_cubes_with(const Compiled_mesh&, Compiled_point_map,
+                                                             Compiled_mesh&, Compiled_point_map, int,
+                                                             Sign_source, int, double);
 } // namespace internal
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL

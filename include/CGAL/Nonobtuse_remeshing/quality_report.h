@@ -198,13 +198,19 @@ Quality_report quality_report(const TriangleMesh& mesh,
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
 
-#if defined(CGAL_NONOBTUSE_REMESHING_COMPILED) && !defined(CGAL_NONOBTUSE_REMESHING_INSTANTIATE_QUALITY_REPORT)
+// With NonobtuseRemeshing::Compiled (compiled_surface_mesh.h): the declarations
+// of its instantiations; src/compiled/quality_report.cpp defines
+// CGAL_NONOBTUSE_REMESHING_INSTANTIATE_QUALITY_REPORT, and there they are the instantiations.
+#ifdef CGAL_NONOBTUSE_REMESHING_COMPILED
 #include <CGAL/Nonobtuse_remeshing/internal/compiled_surface_mesh.h>
 namespace CGAL {
 namespace Nonobtuse_remeshing {
 namespace internal {
-extern template Quality_report quality_report_with(const Compiled_mesh&, const Compiled_mesh*, std::size_t, double,
-                                                   const Angle_certificate<Compiled_mesh::Face_index>&);
+#ifndef CGAL_NONOBTUSE_REMESHING_INSTANTIATE_QUALITY_REPORT
+extern
+#endif
+template Quality_report quality_report_with(const Compiled_mesh&, const Compiled_mesh*, std::size_t, double,
+                                            const Angle_certificate<Compiled_mesh::Face_index>&);
 } // namespace internal
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL

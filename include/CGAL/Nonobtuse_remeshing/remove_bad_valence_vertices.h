@@ -94,13 +94,19 @@ Bad_valence_removal_statistics remove_bad_valence_vertices(TriangleMesh& mesh,
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
 
-#if defined(CGAL_NONOBTUSE_REMESHING_COMPILED) && !defined(CGAL_NONOBTUSE_REMESHING_INSTANTIATE_VALENCE)
+// With NonobtuseRemeshing::Compiled (compiled_surface_mesh.h): the declarations
+// of its instantiations; src/compiled/remove_bad_valence_vertices.cpp defines
+// CGAL_NONOBTUSE_REMESHING_INSTANTIATE_VALENCE, and there they are the instantiations.
+#ifdef CGAL_NONOBTUSE_REMESHING_COMPILED
 #include <CGAL/Nonobtuse_remeshing/internal/compiled_surface_mesh.h>
 namespace CGAL {
 namespace Nonobtuse_remeshing {
 namespace internal {
-extern template Bad_valence_removal_statistics remove_bad_valence_vertices_with(Compiled_mesh&, Compiled_point_map,
-                                                                                int, bool);
+#ifndef CGAL_NONOBTUSE_REMESHING_INSTANTIATE_VALENCE
+extern
+#endif
+template Bad_valence_removal_statistics remove_bad_valence_vertices_with(Compiled_mesh&, Compiled_point_map,
+                                                                         int, bool);
 } // namespace internal
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL

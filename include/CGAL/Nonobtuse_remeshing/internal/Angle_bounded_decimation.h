@@ -311,12 +311,18 @@ Angle_bounded_decimation_statistics angle_bounded_decimation_with(
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
 
-#if defined(CGAL_NONOBTUSE_REMESHING_COMPILED) && !defined(CGAL_NONOBTUSE_REMESHING_INSTANTIATE_DECIMATION)
+// With NonobtuseRemeshing::Compiled (compiled_surface_mesh.h): the declarations
+// of its instantiations; src/compiled/angle_bounded_decimation.cpp defines
+// CGAL_NONOBTUSE_REMESHING_INSTANTIATE_DECIMATION, and there they are the instantiations.
+#ifdef CGAL_NONOBTUSE_REMESHING_COMPILED
 #include <CGAL/Nonobtuse_remeshing/internal/compiled_surface_mesh.h>
 namespace CGAL {
 namespace Nonobtuse_remeshing {
 namespace internal {
-extern template Angle_bounded_decimation_statistics angle_bounded_decimation_with(
+#ifndef CGAL_NONOBTUSE_REMESHING_INSTANTIATE_DECIMATION
+extern
+#endif
+template Angle_bounded_decimation_statistics angle_bounded_decimation_with(
     Compiled_mesh&, Compiled_point_map, const Angle_bounded_decimation_options&, double,
     const std::vector<std::size_t>&, const Compiled_mesh&, Compiled_point_map,
     const Keep_going_function<Angle_bounded_decimation_statistics>&,

@@ -131,29 +131,19 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
   };
   clear(output);
   Nonobtuse_remeshing_statistics stats;
-  const Remeshing_stage last = settings.last;
-  const bool valence_cleanup = settings.valence_cleanup;
-  const int k = settings.drum_subdivisions;
-  const double max_distance = settings.max_distance;
   stats.target_vertices = settings.target_vertices;
   stats.oversampling = settings.oversampling;
   // with a target, the initial mesh is built for `oversampling` times its vertices
   const std::size_t initial_vertices = std::size_t(std::llround(stats.oversampling * double(stats.target_vertices)));
   const double input_diagonal = bbox_diagonal(input);
-  stats.distance.max_distance = max_distance;
-  stats.distance.measurement_error = max_distance / 50.;
+  stats.distance.max_distance = settings.max_distance;
+  stats.distance.measurement_error = settings.max_distance / 50.;
   stats.resolution = stats.target_vertices > 0 ? resolution_for_target_vertices(input, initial_vertices)
-                     : max_distance > 0.       ? resolution_for_max_distance(input, max_distance, input_diagonal)
+                     : settings.max_distance > 0. ? resolution_for_max_distance(input, settings.max_distance, input_diagonal)
                                                : settings.resolution;
   if(stats.resolution < 1 || stats.resolution > 1024)
     throw Bad_parameter("the resolution must lie in [1, 1024]");
   stats.keep_topology = settings.keep_topology;
-  const int max_resolution = settings.max_resolution;
-  const internal::Angle_bounded_decimation_options& decimation_options = settings.decimation;
-  const bool has_max_error = settings.has_max_error;
-  const Sign_source signs = settings.signs;
-  const double budget = settings.memory_budget;
-  const int threads = settings.threads;
 
   // Asks the visitor at a stage boundary; false ends the pipeline there.
   const auto proceed = [&](Remeshing_stage stage, double fraction) {
@@ -202,8 +192,9 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
     const auto build = [&](int resolution, TriangleMesh& mesh) {
       return nonobtuse_marching_cubes(
           *surface, mesh,
-          parameters::combine(parameters::resolution(resolution), parameters::sign_source(signs),
-                              parameters::memory_budget(budget), parameters::number_of_threads(threads)));
+          parameters::combine(parameters::resolution(resolution), parameters::sign_source(settings.signs),
+                              parameters::memory_budget(settings.memory_budget),
+                              parameters::number_of_threads(settings.threads)));
     };
     double building = 0., comparing = 0.;  // over all the initial meshes built
     // Chapter 4: the initial mesh at `resolution`, certified in [35.26, 90]
@@ -247,10 +238,12 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
           throw Bad_input("the initial mesh is empty: the input is too small or too thin for resolution " +
                           std::to_string(stats.resolution));
         stats.budget_resolution = stats.resolution;
-        if(stats.keep_topology || max_distance > 0.)  // a cap below the resolution: no refinement
+        if(stats.keep_topology || settings.max_distance > 0.)  // a cap below the resolution: no refinement
           stats.max_resolution =
-              (std::max)(stats.resolution, max_resolution > 0 ? max_resolution
-                                                              : (std::min)(1024, (max_distance > 0. ? 4 : 2) * stats.resolution));
+              (std::max)(stats.resolution,
+                         settings.max_resolution > 0
+                             ? settings.max_resolution
+                             : (std::min)(1024, (settings.max_distance > 0. ? 4 : 2) * stats.resolution));
       } else {
         TriangleMesh finer;
         Marching_cubes_result r = build(resolution, finer);
@@ -261,10 +254,10 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
       }
       building += stats.initial_mesh.seconds;
       {
-        Thread_pool pool(threads);
+        Thread_pool pool(settings.threads);
         // the automatic signs tested the input for self-intersections already
         Topology_comparator<TriangleMesh> topology(
-            *surface, pool, signs != Sign_source::automatic || stats.initial_mesh.self_intersecting_input);
+            *surface, pool, settings.signs != Sign_source::automatic || stats.initial_mesh.self_intersecting_input);
         stats.topology = topology.compare(output);
         comparing += topology.setup_seconds() + stats.topology.seconds;
         for(int r = stats.resolution; stats.keep_topology && !stats.topology.matches;) {
@@ -302,20 +295,20 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
     // pipeline ends here (the last stage asked for, or a cancel).
     double fitting = 0.;  // over all the fits run
     const auto valence_and_fit_stages = [&]() {
-      if(last == Remeshing_stage::initial_mesh) return false;
+      if(settings.last == Remeshing_stage::initial_mesh) return false;
       // Section 5.7: bad valences out.
-      if(valence_cleanup) {
+      if(settings.valence_cleanup) {
         if(!proceed(Remeshing_stage::valence, 0.)) return false;
         settings.stage_started(Remeshing_stage::valence);
         const auto stage_start = Clock::now();
         stats.valence = remove_bad_valence_vertices(
             output, parameters::combine(
                         parameters::vertex_split(settings.vertex_split),
-                        parameters::drum_subdivisions(k)));
+                        parameters::drum_subdivisions(settings.drum_subdivisions)));
         stats.valence_run = true;
         internal::collect_garbage_of(output, 0);
         settings.stage_finished(Remeshing_stage::valence, seconds_since(stage_start));
-        if(last == Remeshing_stage::valence) return false;
+        if(settings.last == Remeshing_stage::valence) return false;
       }
       // Chapter 5: deform-to-fit, with the caller's fit parameters (the
       // relay takes the place of a fit_visitor among them).
@@ -330,7 +323,7 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
       stats.fit_run = true;
       if(stats.fit.cancelled) stats.cancelled = true;
       settings.stage_finished(Remeshing_stage::fit, seconds_since(stage_start));
-      return last != Remeshing_stage::fit && !stats.cancelled;
+      return settings.last != Remeshing_stage::fit && !stats.cancelled;
     };
 
     if(!initial_stage(0)) return finish();
@@ -342,15 +335,16 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
     Distance_bound_statistics& bound = stats.distance;
     const auto measure = [&](const TriangleMesh& mesh) {
       const auto measure_start = Clock::now();
-      const double d = hausdorff_distance_bound(mesh, input, bound.measurement_error * input_diagonal, threads);
+      const double d = hausdorff_distance_bound(mesh, input, bound.measurement_error * input_diagonal, settings.threads);
       ++bound.measurements;
       bound.seconds += seconds_since(measure_start);
       return d / input_diagonal;
     };
-    if(max_distance > 0. && stats.fit_run && !stats.cancelled) {
+    if(settings.max_distance > 0. && stats.fit_run && !stats.cancelled) {
       bound.fitted_distance = measure(output);
-      while(bound.fitted_distance > distance_room * max_distance && stats.resolution < stats.max_resolution) {
-        const double factor = (std::min)(2.5, (std::max)(1.25, bound.fitted_distance / (distance_aim * max_distance)));
+      while(bound.fitted_distance > distance_room * settings.max_distance && stats.resolution < stats.max_resolution) {
+        const double factor =
+            (std::min)(2.5, (std::max)(1.25, bound.fitted_distance / (distance_aim * settings.max_distance)));
         const int resolution = (std::min)(stats.max_resolution, int(std::ceil(factor * stats.resolution)));
         TriangleMesh closest = output;
         const Nonobtuse_remeshing_statistics closest_stats = stats;
@@ -379,9 +373,9 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
         bound.fitted_distance = d;
       }
       bound.distance = bound.fitted_distance;
-      bound.met = bound.distance <= max_distance;
+      bound.met = bound.distance <= settings.max_distance;
     }
-    if(!going_on || (max_distance > 0. && !bound.met)) return finish();
+    if(!going_on || (settings.max_distance > 0. && !bound.met)) return finish();
 
     // Chapter 6: a mesh over the target (oversampled, refined for its
     // topology) is decimated to it, with the relaxation fitting it to the
@@ -389,18 +383,18 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
     // distance bound, the coarsest level within it.
     const bool over_target =
         stats.target_vertices > 0 && double(vertices(output).size()) > 1.1 * double(stats.target_vertices);
-    if(!(over_target || max_distance > 0.) || !proceed(Remeshing_stage::decimation, 0.)) return finish();
+    if(!(over_target || settings.max_distance > 0.) || !proceed(Remeshing_stage::decimation, 0.)) return finish();
     settings.stage_started(Remeshing_stage::decimation);
     const auto stage_start = Clock::now();
-    if(max_distance > 0.) {
-      stats.decimation = decimate_within_distance(output, *surface, input_diagonal, decimation_options,
-                                                  has_max_error, relay, bound, measure);
-      bound.met = bound.distance <= max_distance;
+    if(settings.max_distance > 0.) {
+      stats.decimation = decimate_within_distance(output, *surface, input_diagonal, settings.decimation,
+                                                  settings.has_max_error, relay, bound, measure);
+      bound.met = bound.distance <= settings.max_distance;
     } else {
       const auto points = get(CGAL::vertex_point, output);
       const double diagonal = certified_mesh_diagonal(output, points);
-      Angle_bounded_decimation_options o = decimation_options;
-      if(!has_max_error) {
+      Angle_bounded_decimation_options o = settings.decimation;
+      if(!settings.has_max_error) {
         // No collapse moves the surface by more than a cube of the grid the
         // target alone gives: the error the pipeline makes without decimating.
         const int coarse = resolution_for_target_vertices(input, stats.target_vertices);
@@ -486,13 +480,19 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_pipeline(const TriangleMesh& inp
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
 
-#if defined(CGAL_NONOBTUSE_REMESHING_COMPILED) && !defined(CGAL_NONOBTUSE_REMESHING_INSTANTIATE_PIPELINE)
+// With NonobtuseRemeshing::Compiled (compiled_surface_mesh.h): the declarations
+// of its instantiations; src/compiled/nonobtuse_remesh.cpp defines
+// CGAL_NONOBTUSE_REMESHING_INSTANTIATE_PIPELINE, and there they are the instantiations.
+#ifdef CGAL_NONOBTUSE_REMESHING_COMPILED
 #include <CGAL/Nonobtuse_remeshing/internal/compiled_surface_mesh.h>
 namespace CGAL {
 namespace Nonobtuse_remeshing {
 namespace internal {
-extern template Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const Compiled_mesh&, Compiled_mesh&,
-                                                                     const Remeshing_settings&);
+#ifndef CGAL_NONOBTUSE_REMESHING_INSTANTIATE_PIPELINE
+extern
+#endif
+template Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const Compiled_mesh&, Compiled_mesh&,
+                                                              const Remeshing_settings&);
 } // namespace internal
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
