@@ -170,7 +170,9 @@ TEST(NonobtuseRemesh, TopologyIsComparedPerInputComponent)
   EXPECT_EQ(s.topology.input_groups, 2u);
   EXPECT_EQ(s.topology.crossing_groups, 0u);
   EXPECT_EQ(s.topology.output_euler_characteristic, 4);
-  EXPECT_FALSE(s.keep_topology);  // the default with a resolution
+  EXPECT_TRUE(s.keep_topology);  // the default, with a resolution too
+  EXPECT_EQ(s.refinements, 0);   // nothing to refine
+  EXPECT_EQ(s.decimation_target, 0u);
 
   s = NR::nonobtuse_remesh(two_spheres(0.7), output, NR::parameters::combine(NR::parameters::resolution(30), init));
   EXPECT_TRUE(s.topology.matches) << s.topology.difference;
@@ -180,7 +182,8 @@ TEST(NonobtuseRemesh, TopologyIsComparedPerInputComponent)
   EXPECT_EQ(s.topology.output_components, 1u);
 
   const Mesh hand = nonobtuse_test::load("hand.off");
-  s = NR::nonobtuse_remesh(hand, output, NR::parameters::combine(NR::parameters::resolution(47), init));
+  s = NR::nonobtuse_remesh(hand, output,
+                           NR::parameters::combine(NR::parameters::resolution(47), NR::parameters::keep_topology(false), init));
   EXPECT_FALSE(s.topology.matches);
   EXPECT_EQ(s.topology.groups_differing, 1u);
   EXPECT_EQ(s.topology.output_components, NR::quality_report(output).connected_components);
@@ -191,10 +194,11 @@ TEST(NonobtuseRemesh, TopologyIsComparedPerInputComponent)
       << s.topology.difference;
   EXPECT_EQ(s.refinements, 0);
 
-  // refined: 47 -> 59 keeps it; a cap at 47 does not let it
-  s = NR::nonobtuse_remesh(hand, output,
-                           NR::parameters::combine(NR::parameters::resolution(47), NR::parameters::keep_topology(true), init));
+  // refined (the default): 47 -> 59 keeps it; a cap at 47 does not let it
+  const std::size_t vertices_at_47 = vertices(output).size();
+  s = NR::nonobtuse_remesh(hand, output, NR::parameters::combine(NR::parameters::resolution(47), init));
   EXPECT_TRUE(s.topology.matches) << s.topology.difference;
+  EXPECT_EQ(s.decimation_target, vertices_at_47);  // the size the resolution gives, after the fit
   EXPECT_GE(s.refinements, 1);
   EXPECT_EQ(s.budget_resolution, 47);
   EXPECT_GT(s.resolution, 47);
@@ -218,6 +222,31 @@ TEST(NonobtuseRemesh, TopologyIsComparedPerInputComponent)
   EXPECT_EQ(s.resolution, 47);
   EXPECT_EQ(s.max_resolution, 47);
   EXPECT_THROW(NR::nonobtuse_remesh(hand, output, NR::parameters::max_resolution(2000)), NR::Bad_parameter);
+}
+
+// A resolution keeps the topology too (the default): the hand's grid at 47
+// cuts a fingertip off, so the initial mesh is refined, fitted, and
+// decimated back to the vertex count of the grid at 47. The written file
+// has the input's topology and that size within 10%, and certifies.
+TEST(NonobtuseRemesh, ResolutionKeepsTheTopologyAndTheSize)
+{
+  const Mesh hand = nonobtuse_test::load("hand.off");
+  Mesh first, output;
+  NR::nonobtuse_remesh(hand, first,
+                       NR::parameters::combine(NR::parameters::resolution(47), NR::parameters::keep_topology(false),
+                                               NR::parameters::stop_after(NR::Remeshing_stage::initial_mesh)));
+  const auto s = NR::nonobtuse_remesh(hand, output, NR::parameters::resolution(47));
+  EXPECT_GE(s.refinements, 1);
+  EXPECT_EQ(s.target_vertices, 0u);
+  EXPECT_EQ(s.decimation_target, vertices(first).size());
+  ASSERT_TRUE(s.decimation_run);
+  const Mesh reread = nonobtuse_test::written_and_reread(output, "hand_47.off");
+  EXPECT_NEAR(double(vertices(reread).size()), double(s.decimation_target), 0.1 * double(s.decimation_target));
+  const NR::Quality_report q = NR::quality_report(reread), in = NR::quality_report(hand);
+  EXPECT_EQ(q.connected_components, in.connected_components);
+  EXPECT_EQ(q.border_cycles, in.border_cycles);
+  EXPECT_EQ(q.euler_characteristic, in.euler_characteristic);
+  EXPECT_TRUE(NR::certify_angle_bounds(reread).is_certified());
 }
 
 // A target vertex count keeps the topology: the hand's initial mesh for

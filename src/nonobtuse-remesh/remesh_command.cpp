@@ -56,6 +56,9 @@ void print_topology(std::ostream& out, const NR::Nonobtuse_remeshing_statistics&
   if(s.refinements > 0)
     out << "topology: refined the initial mesh " << s.refinements << " time(s) from resolution "
         << s.budget_resolution << " (cap " << s.max_resolution << "); kept resolution " << s.resolution << "\n";
+  if(s.target_vertices == 0 && s.decimation_target > 0)
+    out << "topology: after the fit, decimated back to the " << s.decimation_target << " vertices of resolution "
+        << s.budget_resolution << "'s initial mesh\n";
   if(t.matches)
     out << "topology: the input's, per input component (" << t.input_components << " component(s), "
         << t.input_border_cycles << " border(s)"
@@ -67,7 +70,7 @@ void print_topology(std::ostream& out, const NR::Nonobtuse_remeshing_statistics&
     out << "topology: differs from the input's in " << t.groups_differing << " of " << t.input_groups
         << " input component group(s): " << t.difference
         << (s.keep_topology ? " (--max-resolution raises the cap of the refinement)"
-                            : " (--topology keep refines the grid until it matches)")
+                            : " (--topology keep, the default, refines the grid until it matches)")
         << "\n";
 }
 
@@ -190,7 +193,8 @@ int remesh_command(int argc, char** argv)
     ("output,o", po::value<std::string>(&output_path)->required(),
      "where to write the result (.off, .obj, .ply, .stl)")
     ("resolution,N", po::value<int>(&resolution)->default_value(100),
-     "Marching Cubes cubes along the longest side of the input's bounding box")
+     "Marching Cubes cubes along the longest side of the input's bounding box (the first grid: --topology "
+     "keep refines it while the topology differs)")
     ("target-vertices,V", po::value<long long>(&target_vertices),
      "instead of --resolution: about this many output vertices (the resolution is chosen from the input's "
      "area and bounding box)")
@@ -206,10 +210,10 @@ int remesh_command(int argc, char** argv)
      "it to V, which keeps the vertices where the surface needs them (2 fits curved inputs closer; CAD "
      "parts' regular grids decimate badly); in [1, 16]")
     ("topology", po::value<std::string>(&topology),
-     "keep: while the initial mesh's topology differs from the input's (per input component: components, "
-     "borders, Euler characteristic), rebuild it at 1.25 times the resolution, up to --max-resolution, then "
-     "decimate the fitted mesh to --target-vertices; ignore: the grid from the budget alone. Default: keep "
-     "with --target-vertices or --max-distance, ignore with --resolution")
+     "keep (the default): while the initial mesh's topology differs from the input's (per input component: "
+     "components, borders, Euler characteristic), rebuild it at 1.25 times the resolution, up to "
+     "--max-resolution; with --target-vertices the fitted mesh is then decimated to V. ignore: the grid of "
+     "--resolution, or of the budget alone")
     ("max-resolution", po::value<int>(&max_resolution),
      "cap of that refinement (and of --max-distance's), in [1, 1024] (default: twice the first resolution, "
      "four times with --max-distance)")
@@ -317,8 +321,7 @@ int remesh_command(int argc, char** argv)
     if(!(oversampling >= 1. && oversampling <= 16.)) throw std::invalid_argument("--oversampling must lie in [1, 16]");
     if(vm.count("max-resolution") && (max_resolution < 1 || max_resolution > 1024))
       throw std::invalid_argument("--max-resolution must lie in [1, 1024]");
-    const bool keep_topology =
-        vm.count("topology") ? topology == "keep" : vm.count("target-vertices") + vm.count("max-distance") > 0;
+    const bool keep_topology = !vm.count("topology") || topology == "keep";
     if(!ratios.empty() && (last == NR::Remeshing_stage::initial_mesh || last == NR::Remeshing_stage::valence))
       throw std::invalid_argument("--lod needs the fit (--stop-after fit or decimation)");
     std::vector<Named_path> outputs{{"-o", output_path},
@@ -502,6 +505,7 @@ int remesh_command(int argc, char** argv)
       j["topology"]["max_resolution"] = stats.max_resolution;
       j["topology"]["refinements"] = stats.refinements;
       j["topology"]["resolution"] = stats.resolution;
+      j["topology"]["decimation_target"] = stats.decimation_target;
       j["input_components"] = {{"components", stats.input_components},
                                {"missing", stats.input_components_missing},
                                {"largest_missing_diameter", stats.largest_missing_component},

@@ -29,14 +29,17 @@ namespace Nonobtuse_remeshing {
 ///
 /// Beyond the thesis, the topology of the initial mesh is compared with the
 /// input's, per input component (`Topology_comparison`, in the statistics).
-/// With `keep_topology`, while it differs (parts thinner than a cube cut off,
-/// holes opened), the initial mesh is rebuilt at 1.25 times the resolution,
-/// up to `max_resolution`; the first mesh that matches is kept, else the one
-/// with the fewest differences. With a `target_vertices` count V, the
-/// initial mesh is built for `oversampling` times V vertices and the fitted
-/// mesh, over V by more than 10%, is decimated to V (`angle_bounded_decimation()`,
-/// its relaxation fitting to `input`): the collapses keep the vertices where
-/// the surface needs them, and keep the topology.
+/// With `keep_topology` (the default), while it differs (parts thinner than a
+/// cube cut off, holes opened), the initial mesh is rebuilt at 1.25 times the
+/// resolution, up to `max_resolution`; the first mesh that matches is kept,
+/// else the one with the fewest differences. With a `target_vertices` count
+/// V, the initial mesh is built for `oversampling` times V vertices and the
+/// fitted mesh, over V by more than 10%, is decimated to V
+/// (`angle_bounded_decimation()`, its relaxation fitting to `input`): the
+/// collapses keep the vertices where the surface needs them, and keep the
+/// topology. With a `resolution`, a finer initial mesh kept for the topology
+/// is decimated back in the same way, to the vertex count of the
+/// resolution's own initial mesh (`decimation_target` in the statistics).
 /// With a `max_distance` bound instead, the grid comes from the bound, is
 /// refined while the fitted mesh has little room under it, and the output is
 /// the coarsest decimation level measured within it (`Distance_bound_statistics`).
@@ -73,7 +76,7 @@ namespace Nonobtuse_remeshing {
 ///     times the target, in [1, 16]; default 1 (2 fits curved inputs closer, see the manual)
 ///     \cgalParamType{`double`} \cgalParamNEnd
 ///   \cgalParamNBegin{keep_topology} refine the initial mesh until its topology is the input's;
-///     default true with a `target_vertices` count or a `max_distance`, false with a `resolution`
+///     default true (false: the grid of the `resolution`, or of the `target_vertices` alone)
 ///     \cgalParamType{`bool`} \cgalParamNEnd
 ///   \cgalParamNBegin{max_resolution} the cap of that refinement and of the one for `max_distance`,
 ///     in [1, 1024]; default 0: twice the resolution given or chosen for the target (about 4 times

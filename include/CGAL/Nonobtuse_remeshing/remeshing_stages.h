@@ -173,6 +173,10 @@ struct Nonobtuse_remeshing_statistics
   bool keep_topology = false;              ///< finer initial meshes were allowed until the topology matched
   int max_resolution = 0;                  ///< the cap of that refinement
   int refinements = 0;                     ///< finer initial meshes built for the topology
+  /// the vertex count the decimation stage aims at: the target; with a resolution, the vertices of
+  /// its initial mesh when a finer one was kept for the topology (so that the output keeps the
+  /// size the resolution gives); else 0
+  std::size_t decimation_target = 0;
   Topology_comparison topology;            ///< of the initial mesh kept
   std::size_t degenerate_faces_removed = 0; ///< zero-area input faces removed from a copy of the input first
   Marching_cubes_result initial_mesh;      ///< Table 4.1 (its face maps are left empty)

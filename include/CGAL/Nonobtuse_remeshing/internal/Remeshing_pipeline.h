@@ -144,6 +144,7 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
   if(stats.resolution < 1 || stats.resolution > 1024)
     throw Bad_parameter("the resolution must lie in [1, 1024]");
   stats.keep_topology = settings.keep_topology;
+  stats.decimation_target = stats.target_vertices;
 
   // Asks the visitor at a stage boundary; false ends the pipeline there.
   const auto proceed = [&](Remeshing_stage stage, double fraction) {
@@ -197,6 +198,7 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
                               parameters::number_of_threads(settings.threads)));
     };
     double building = 0., comparing = 0.;  // over all the initial meshes built
+    std::size_t budget_vertices = 0;       // of the first initial mesh
     // Chapter 4: the initial mesh at `resolution`, certified in [35.26, 90]
     // by construction (0: the first, from the parameters). Beyond the
     // thesis, its topology is compared with the input's and, with
@@ -238,6 +240,7 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
           throw Bad_input("the initial mesh is empty: the input is too small or too thin for resolution " +
                           std::to_string(stats.resolution));
         stats.budget_resolution = stats.resolution;
+        budget_vertices = vertices(output).size();
         if(stats.keep_topology || settings.max_distance > 0.)  // a cap below the resolution: no refinement
           stats.max_resolution =
               (std::max)(stats.resolution,
@@ -282,6 +285,9 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
           }
           if(stats.topology.matches || r == stats.max_resolution) break;
         }
+        // a resolution sets the size: a finer mesh kept is decimated back to it
+        if(stats.target_vertices == 0 && settings.max_distance == 0. && stats.resolution > stats.budget_resolution)
+          stats.decimation_target = budget_vertices;
       }
       stats.initial_mesh.seconds = building;
       stats.topology.seconds = comparing;
@@ -378,11 +384,12 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
     if(!going_on || (settings.max_distance > 0. && !bound.met)) return finish();
 
     // Chapter 6: a mesh over the target (oversampled, refined for its
-    // topology) is decimated to it, with the relaxation fitting it to the
+    // topology), or refined beyond the resolution given, is decimated to
+    // the target or to the resolution's vertex count, with the relaxation fitting it to the
     // input; the collapses keep the topology and the certification. With a
     // distance bound, the coarsest level within it.
     const bool over_target =
-        stats.target_vertices > 0 && double(vertices(output).size()) > 1.1 * double(stats.target_vertices);
+        stats.decimation_target > 0 && double(vertices(output).size()) > 1.1 * double(stats.decimation_target);
     if(!(over_target || settings.max_distance > 0.) || !proceed(Remeshing_stage::decimation, 0.)) return finish();
     settings.stage_started(Remeshing_stage::decimation);
     const auto stage_start = Clock::now();
@@ -396,12 +403,14 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
       Angle_bounded_decimation_options o = settings.decimation;
       if(!settings.has_max_error) {
         // No collapse moves the surface by more than a cube of the grid the
-        // target alone gives: the error the pipeline makes without decimating.
-        const int coarse = resolution_for_target_vertices(input, stats.target_vertices);
+        // target (or the resolution) alone gives: the error the pipeline
+        // makes without decimating.
+        const int coarse = stats.target_vertices > 0 ? resolution_for_target_vertices(input, stats.target_vertices)
+                                                     : stats.budget_resolution;
         o.max_error = stats.initial_mesh.cube_size * double(stats.resolution) / double(coarse) / diagonal;
       }
       stats.decimation = angle_bounded_decimation_with(
-          output, points, o, diagonal, {stats.target_vertices}, *surface, get(CGAL::vertex_point, *surface),
+          output, points, o, diagonal, {stats.decimation_target}, *surface, get(CGAL::vertex_point, *surface),
           keep_going_function<Angle_bounded_decimation_statistics>(relay),
           [](std::size_t, bool, const Angle_bounded_decimation_statistics&) {});
       internal::collect_garbage_of(output, 0);
@@ -443,8 +452,7 @@ Remeshing_settings remeshing_settings(const NamedParameters& np, Visitor& visito
   if(!(s.oversampling >= 1. && s.oversampling <= 16.))
     throw Bad_parameter("the oversampling must lie in [1, 16]");
   s.resolution = choose_parameter(get_parameter(np, internal_np::resolution), s.resolution);
-  s.keep_topology = choose_parameter(get_parameter(np, internal_np::keep_topology),
-                                     s.target_vertices > 0 || s.max_distance > 0.);
+  s.keep_topology = choose_parameter(get_parameter(np, internal_np::keep_topology), true);
   s.max_resolution = choose_parameter(get_parameter(np, internal_np::max_resolution), s.max_resolution);
   if(s.max_resolution < 0 || s.max_resolution > 1024)
     throw Bad_parameter("the maximum resolution must lie in [1, 1024] (0: twice the resolution)");
