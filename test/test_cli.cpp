@@ -393,6 +393,7 @@ TEST(Cli, RemeshFitsByDefault)
   const auto i = nlohmann::json::parse(slurp(folder + "/init.json"));
   const auto f = nlohmann::json::parse(slurp(folder + "/fit.json"));
   EXPECT_FALSE(i.contains("fit"));
+  EXPECT_EQ(i["topology"]["border_mismatch"], 2);  // 5 borders of 7
   EXPECT_EQ(f["fit"]["vertices"], num_vertices(mesh));
   EXPECT_GT(f["fit"]["moves"].get<std::size_t>(), num_vertices(mesh));
   EXPECT_EQ(f["fit"]["qp_fallbacks"], 0);

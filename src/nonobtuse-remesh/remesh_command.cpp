@@ -219,7 +219,8 @@ int remesh_command(int argc, char** argv)
      "four times with --max-distance)")
     ("stop-after", po::value<std::string>(&stop_after)->default_value("decimation"),
      "last stage to run: init, valence, fit or decimation (which runs only when the fitted mesh is over "
-     "--target-vertices by more than 10%)")
+     "--target-vertices, or over the vertex count of the grid --resolution gives after a refinement for "
+     "the topology, by more than 10%)")
     ("no-valence-cleanup", "skip the removal of bad-valence vertices between init and fit")
     ("no-vertex-split", "valence: removal only, as in the thesis (no vertex splits)")
     ("signs", po::value<std::string>(&signs)->default_value("auto"),
@@ -272,9 +273,11 @@ int remesh_command(int argc, char** argv)
                     "(removal of bad-valence vertices, vertex splits), fit (deform-to-fit with\n"
                     "constrained Laplacian smoothing), decimation (with --target-vertices, down to\n"
                     "V when the fitted mesh is over it: refined for the input's topology, or\n"
-                    "oversampled); then, with --lod, levels of detail by angle-bounded decimation,\n"
-                    "each certified on its written file. --max-error applies to the levels only;\n"
-                    "the decimation stage stops at one cube of the grid V alone gives.",
+                    "oversampled; with --resolution N, down to the vertices of the grid N when\n"
+                    "it was refined for the topology); then, with --lod, levels of detail by\n"
+                    "angle-bounded decimation, each certified on its written file. --max-error\n"
+                    "applies to the levels only; the decimation stage stops at one cube of the\n"
+                    "grid V or N alone gives.",
                     options, positional, argc, argv, vm, exit_code))
     return exit_code;
 

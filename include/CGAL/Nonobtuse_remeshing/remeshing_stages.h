@@ -98,6 +98,11 @@ struct Topology_comparison
   /// over the groups that differ: |components - 1| + |border cycles - the input's| + |Euler
   /// characteristic - the input's| / 2 rounded up (a part cut off counts 2, a handle closed 1)
   std::size_t mismatch = 0;
+  /// over the groups that differ: |border cycles - the input's| (a part of `mismatch`). The
+  /// refinement prefers the mesh with the fewest of these first: a hole opened in a closed
+  /// surface (or an input border closed) changes what the surface bounds, a part cut off or a
+  /// handle closed does not
+  std::size_t border_mismatch = 0;
   std::string difference;  ///< the first difference in words; empty when the topology matches
   double seconds = 0.;     ///< spent comparing, over all the initial meshes built, the input's setup included
 };
@@ -120,6 +125,7 @@ void for_each_field(const Topology_comparison& t, F&& f)
   f("crossing_groups", t.crossing_groups);
   f("groups_differing", t.groups_differing);
   f("mismatch", t.mismatch);
+  f("border_mismatch", t.border_mismatch);
   f("difference", t.difference);
   f("seconds", t.seconds);
 }

@@ -37,6 +37,7 @@
 #include <functional>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 namespace CGAL {
 namespace Nonobtuse_remeshing {
@@ -204,8 +205,9 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
     // thesis, its topology is compared with the input's and, with
     // keep_topology, finer grids are built while it differs (parts thinner
     // than a cube cut off, holes opened), up to the cap; the mesh kept is the
-    // first that matches, else the one with the smallest mismatch (the
-    // coarsest among those). False when the visitor cancels.
+    // first that matches, else the one with the fewest border differences,
+    // then the smallest mismatch (the coarsest among those). False when the
+    // visitor cancels.
     const auto initial_stage = [&](int resolution) {
       if(!proceed(Remeshing_stage::initial_mesh, 0.)) return false;
       settings.stage_started(Remeshing_stage::initial_mesh);
@@ -277,7 +279,8 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
           building += built.seconds;
           Topology_comparison t = topology.compare(finer);
           comparing += t.seconds;
-          if(t.matches || t.mismatch < stats.topology.mismatch) {
+          if(t.matches || std::make_pair(t.border_mismatch, t.mismatch) <
+                              std::make_pair(stats.topology.border_mismatch, stats.topology.mismatch)) {
             stats.initial_mesh = std::move(built);
             stats.resolution = r;
             stats.topology = std::move(t);

@@ -211,6 +211,7 @@ public:
       if(same) continue;
       ++r.groups_differing;
       const auto gap = [](long long a, long long b) { return std::size_t(a > b ? a - b : b - a); };
+      r.border_mismatch += gap((long long)found[g].border_cycles, (long long)expected_[g].border_cycles);
       r.mismatch += gap((long long)found[g].components, 1) +
                     gap((long long)found[g].border_cycles, (long long)expected_[g].border_cycles) +
                     (crossing_[g] ? 0 : (gap(found[g].euler_characteristic, expected_[g].euler_characteristic) + 1) / 2);
