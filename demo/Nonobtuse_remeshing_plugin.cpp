@@ -254,12 +254,19 @@ public Q_SLOTS:
   /// nonobtuse_remesh() with `resolution` cubes along the longest side.
   bool remesh(int resolution, double alpha, int smoothing_steps)
   {
-    return run_remesh(resolution, 0, alpha, smoothing_steps, true, false);
+    return run_remesh({resolution, 0, 0.}, alpha, smoothing_steps, true, false);
   }
   /// nonobtuse_remesh() with the resolution chosen for about `target_vertices`.
   bool remeshToVertices(int target_vertices, double alpha, int smoothing_steps)
   {
-    return run_remesh(0, target_vertices, alpha, smoothing_steps, true, false);
+    return run_remesh({0, target_vertices, 0.}, alpha, smoothing_steps, true, false);
+  }
+  /// nonobtuse_remesh() with the fewest vertices within `max_distance_percent`
+  /// of the diagonal (symmetric Hausdorff distance, measured); false also
+  /// when the bound is not met (the closest mesh found is added).
+  bool remeshToDistance(double max_distance_percent, double alpha, int smoothing_steps)
+  {
+    return run_remesh({0, 0, max_distance_percent}, alpha, smoothing_steps, true, false);
   }
   /// angle_bounded_decimation() to `ratio` of the vertices; `max_error_percent`
   /// of the diagonal stops it earlier (0: no such limit).
@@ -320,8 +327,14 @@ private:
     scene->setSelectedItem(id);
     return id;
   }
-  bool run_remesh(int resolution, int target_vertices, double alpha, int smoothing_steps, bool hide_input,
-                  bool interactive);
+  // What sizes the remeshed mesh: one of the three is set.
+  struct Size
+  {
+    int resolution;
+    int target_vertices;
+    double max_distance_percent;
+  };
+  bool run_remesh(const Size& size, double alpha, int smoothing_steps, bool hide_input, bool interactive);
   bool run_decimation(double ratio, double max_error_percent, bool interactive);
 
   QMainWindow* mw = nullptr;
@@ -332,7 +345,7 @@ private:
   QAction* action_certify = nullptr;
   // dialog values, kept between runs
   int last_mode = 0, last_resolution = 60, last_target_vertices = 5000, last_smoothing = 2;
-  double last_alpha = 0.5, last_ratio = 0.5, last_max_error = 0.;
+  double last_max_distance = 1., last_alpha = 0.5, last_ratio = 0.5, last_max_error = 0.;
   bool last_hide_input = true;
 };
 
@@ -355,6 +368,7 @@ void Polyhedron_demo_nonobtuse_remeshing_plugin::on_remesh_triggered()
   QComboBox* mode = new QComboBox;
   mode->addItem(tr("Resolution (cubes along the longest side)"));
   mode->addItem(tr("Target vertex count"));
+  mode->addItem(tr("Distance bound (% of the diagonal)"));
   mode->setCurrentIndex(last_mode);
   form->addRow(tr("Size by"), mode);
 
@@ -367,8 +381,16 @@ void Polyhedron_demo_nonobtuse_remeshing_plugin::on_remesh_triggered()
   target->setRange(10, 10000000);
   target->setValue(last_target_vertices);
   target->setToolTip(tr("The resolution is chosen so that the result has about this many vertices"));
+  QDoubleSpinBox* distance = new QDoubleSpinBox;
+  distance->setRange(0.01, 10.);
+  distance->setDecimals(3);
+  distance->setSingleStep(0.1);
+  distance->setValue(last_max_distance);
+  distance->setToolTip(tr("The fewest vertices whose symmetric Hausdorff distance to the input, measured on the "
+                          "result, is at most this % of the input's bounding-box diagonal"));
   size->addWidget(resolution);
   size->addWidget(target);
+  size->addWidget(distance);
   size->setCurrentIndex(last_mode);
   connect(mode, SIGNAL(currentIndexChanged(int)), size, SLOT(setCurrentIndex(int)));
   form->addRow(tr("Size"), size);
@@ -400,16 +422,17 @@ void Polyhedron_demo_nonobtuse_remeshing_plugin::on_remesh_triggered()
   last_mode = mode->currentIndex();
   last_resolution = resolution->value();
   last_target_vertices = target->value();
+  last_max_distance = distance->value();
   last_alpha = alpha->value();
   last_smoothing = smoothing->value();
   last_hide_input = hide->isChecked();
-  run_remesh(last_mode == 0 ? last_resolution : 0, last_mode == 1 ? last_target_vertices : 0, last_alpha,
-             last_smoothing, last_hide_input, true);
+  run_remesh({last_mode == 0 ? last_resolution : 0, last_mode == 1 ? last_target_vertices : 0,
+              last_mode == 2 ? last_max_distance : 0.},
+             last_alpha, last_smoothing, last_hide_input, true);
 }
 
-bool Polyhedron_demo_nonobtuse_remeshing_plugin::run_remesh(int resolution, int target_vertices, double alpha,
-                                                             int smoothing_steps, bool hide_input,
-                                                             bool interactive)
+bool Polyhedron_demo_nonobtuse_remeshing_plugin::run_remesh(const Size& size, double alpha, int smoothing_steps,
+                                                             bool hide_input, bool interactive)
 {
   Scene_surface_mesh_item* item = selected_item();
   if(!item) {
@@ -430,13 +453,17 @@ bool Polyhedron_demo_nonobtuse_remeshing_plugin::run_remesh(int resolution, int 
       const auto common = NR::parameters::combine(NR::parameters::alpha(alpha),
                                                   NR::parameters::smoothing_steps(smoothing_steps),
                                                   NR::parameters::remeshing_visitor(std::ref(visitor)));
-      if(target_vertices > 0)
+      if(size.max_distance_percent > 0.)
         stats = NR::nonobtuse_remesh(
             input, output,
-            NR::parameters::combine(NR::parameters::target_vertices(std::size_t(target_vertices)), common));
+            NR::parameters::combine(NR::parameters::max_distance(size.max_distance_percent / 100.), common));
+      else if(size.target_vertices > 0)
+        stats = NR::nonobtuse_remesh(
+            input, output,
+            NR::parameters::combine(NR::parameters::target_vertices(std::size_t(size.target_vertices)), common));
       else
         stats = NR::nonobtuse_remesh(input, output,
-                                     NR::parameters::combine(NR::parameters::resolution(resolution), common));
+                                     NR::parameters::combine(NR::parameters::resolution(size.resolution), common));
     } catch(const std::exception& e) {
       report_error(tr("Nonobtuse remesh of %1 failed: %2").arg(input_name).arg(QString::fromUtf8(e.what())),
                    interactive);
@@ -452,22 +479,40 @@ bool Polyhedron_demo_nonobtuse_remeshing_plugin::run_remesh(int resolution, int 
   }
   // The library certifies its output; the plugin says so on what it adds.
   const auto certificate = NR::certify_angle_bounds(output);
+  // with a bound: the distance the library measured on the output
+  const NR::Distance_bound_statistics& bound = stats.distance;
+  const bool bounded = size.max_distance_percent > 0.;
+  const QString refined_for = stats.refinements > 0 && bound.refinements > 0 ? tr("the input's topology and the bound")
+                              : stats.refinements > 0                        ? tr("the input's topology")
+                                                                             : tr("the distance bound");
+  const QString distance =
+      bounded ? tr("; Hausdorff distance %1% of the diagonal, %2 the bound %3% (measured within %4%)")
+                    .arg(100. * bound.distance, 0, 'f', 3)
+                    .arg(bound.met ? tr("within") : tr("over"))
+                    .arg(size.max_distance_percent)
+                    .arg(100. * bound.measurement_error, 0, 'f', 3)
+              : QString();
   const QString summary =
-      tr("Nonobtuse remesh of %1 (resolution %2, alpha %3, smoothing %4)%5: %6 vertices, %7 faces in %8 s; %9")
+      tr("Nonobtuse remesh of %1 (resolution %2, alpha %3, smoothing %4)%5: %6 vertices, %7 faces in %8 s; %9%10")
           .arg(input_name)
-          .arg(stats.resolution)
+          .arg(stats.resolution == stats.budget_resolution
+                   ? QString::number(stats.resolution)
+                   : tr("%1, refined from %2 for %3").arg(stats.resolution).arg(stats.budget_resolution).arg(refined_for))
           .arg(alpha)
           .arg(smoothing_steps)
           .arg(stats.cancelled ? tr(", cancelled") : QString())
           .arg(qulonglong(num_vertices(output)))
           .arg(qulonglong(num_faces(output)))
           .arg(stats.seconds, 0, 'f', 2)
-          .arg(certificate_summary(certificate));
-  const QString name = tr("%1 (nonobtuse, N=%2)").arg(input_name).arg(stats.resolution);
+          .arg(certificate_summary(certificate))
+          .arg(distance);
+  const QString name = bounded ? tr("%1 (nonobtuse, %2%)").arg(input_name).arg(size.max_distance_percent)
+                               : tr("%1 (nonobtuse, N=%2)").arg(input_name).arg(stats.resolution);
   add_result(scene->item(input_id) == item ? item : nullptr, std::move(output), name, hide_input);
-  report(summary, !certificate.is_certified());
+  const bool ok = certificate.is_certified() && (!bounded || bound.met);
+  report(summary, !ok);
   if(interactive) show_summary(tr("Nonobtuse remeshing"), summary);
-  return certificate.is_certified();
+  return ok;
 }
 
 void Polyhedron_demo_nonobtuse_remeshing_plugin::on_decimate_triggered()
