@@ -57,8 +57,9 @@ void print_topology(std::ostream& out, const NR::Nonobtuse_remeshing_statistics&
     out << "topology: refined the initial mesh " << s.refinements << " time(s) from resolution "
         << s.budget_resolution << " (cap " << s.max_resolution << "); kept resolution " << s.resolution << "\n";
   if(s.target_vertices == 0 && s.decimation_target > 0)
-    out << "topology: after the fit, decimated back to the " << s.decimation_target << " vertices of resolution "
-        << s.budget_resolution << "'s initial mesh\n";
+    out << "topology: " << (s.decimation_run ? "after the fit, decimated back to the " : "not decimated back to the ")
+        << s.decimation_target << " vertices of resolution " << s.budget_resolution << "'s initial mesh"
+        << (s.decimation_run ? "" : " (the decimation stage did not run)") << "\n";
   if(t.matches)
     out << "topology: the input's, per input component (" << t.input_components << " component(s), "
         << t.input_border_cycles << " border(s)"
