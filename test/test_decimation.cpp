@@ -224,7 +224,8 @@ TEST(Decimation, HierarchyOfTheSamples)
 }
 
 // The thesis's single greedy run (no relaxation) and early termination
-// (6.5): both stop before the target, say why, and leave a certified mesh.
+// (6.5): both stop before the target, say why, and leave a certified mesh;
+// under a ceiling, placements over it stop at the pre-test.
 TEST(Decimation, EarlyTerminationAndTheThesisRun)
 {
   const Mesh full = fitted("pig.off", 30);
@@ -234,6 +235,7 @@ TEST(Decimation, EarlyTerminationAndTheThesisRun)
   EXPECT_EQ(s.stop_reason, NR::Decimation_stop_reason::max_error);
   EXPECT_GT(s.stopping_error, 1e-4);
   EXPECT_LE(s.largest_collapse_error, 1e-4);
+  EXPECT_GT(s.placements_over_ceiling, 0u);  // left at the pre-test: no collapse over the ceiling above
   EXPECT_GT(s.vertices_after, s.target_vertices);
   strict.collect_garbage();
   EXPECT_TRUE(NR::certify_angle_bounds(nonobtuse_test::written_and_reread(strict, "strict.off")).is_certified());
@@ -243,6 +245,7 @@ TEST(Decimation, EarlyTerminationAndTheThesisRun)
       thesis, NR::parameters::combine(NR::parameters::vertex_ratio(0.1), NR::parameters::relaxation(false)));
   EXPECT_EQ(t.rounds, 1u);
   EXPECT_EQ(t.relaxations, 0u);
+  EXPECT_EQ(t.placements_over_ceiling, 0u);  // no ceiling without max_error
   EXPECT_EQ(t.stop_reason, NR::Decimation_stop_reason::no_collapse_left);
   EXPECT_GT(t.collapses, 0u);
   thesis.collect_garbage();

@@ -128,6 +128,8 @@ struct Angle_bounded_decimation_statistics
   std::size_t qp_solves = 0;      ///< QPs of the placements (equation 6.4): a drum-free pre-test, then F(u, v)
   std::size_t qp_fallbacks = 0;   ///< solves handed to CGAL's QP solver by the fast path
   std::size_t empty_regions = 0;  ///< placements refused: F(u, v) empty or degenerate
+  /// placements left at the drum-free pre-test, whose cost was over the round's ceiling already
+  std::size_t placements_over_ceiling = 0;
   std::size_t valence_refusals = 0;        ///< placements and collapses refused by the valence floor (attempts)
   std::size_t certification_refusals = 0;  ///< collapses refused by the exact certification (attempts)
   std::size_t topology_refusals = 0;       ///< collapses refused by CGAL's topology tests (its fold test reports none)
@@ -249,6 +251,7 @@ void for_each_field(const Angle_bounded_decimation_statistics& s, F&& f)
   f("qp_solves", s.qp_solves);
   f("qp_fallbacks", s.qp_fallbacks);
   f("empty_regions", s.empty_regions);
+  f("placements_over_ceiling", s.placements_over_ceiling);
   f("valence_refusals", s.valence_refusals);
   f("certification_refusals", s.certification_refusals);
   f("topology_refusals", s.topology_refusals);

@@ -163,6 +163,9 @@ public:
       ++stats_.rounds;
       const std::size_t before = stats_.collapses;
       stopped_by_ceiling_ = stopped_at_max_error_ = false;
+      const double ceiling_length = ceiling_ * context_.diagonal;
+      context_.ceiling_cost = ceiling_ < std::numeric_limits<double>::infinity() ? ceiling_length * ceiling_length
+                                                                                 : ceiling_;
       stats_.stopping_error = 0.;
       Surface_mesh_simplification::edge_collapse(
           mesh_, stop,

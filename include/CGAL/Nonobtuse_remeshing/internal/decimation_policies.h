@@ -35,6 +35,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -50,6 +51,7 @@ struct Decimation_context
   int drum_subdivisions = 2;
   std::size_t min_interior_valence = 4, min_border_valence = 3;
   double diagonal = 1.;
+  double ceiling_cost = std::numeric_limits<double>::infinity();  // the round's ceiling, as a cost
   Angle_bounds bounds;
   Angle_bounded_decimation_statistics* statistics = nullptr;
   std::size_t filter_refusals = 0, non_collapsable = 0;  // their difference: CGAL's topology and fold tests
@@ -136,7 +138,11 @@ public:
     const Small_qp form = context_->form(profile.v0(), profile.v1(), frame);
     // F(u, v) lies within its half-spaces without the drum (k = 0: U, V, R,
     // S, T, no trigonometry), where four empty regions in five are empty
-    // already, at about a third of the cost; then the whole region.
+    // already, at about a third of the cost; then the whole region. The
+    // cost at the drum-free optimum is a lower bound of the cost in F(u, v):
+    // over the round's ceiling, the edge cannot be collapsed in this round,
+    // so that optimum stands as its placement (its key in the queue; a
+    // popped edge is placed again) and the whole region is not built.
     Qp_result r;
     for(int k : {0, context_->drum_subdivisions}) {
       region_.clear();
@@ -151,6 +157,15 @@ public:
       if(r.status != Qp_status::optimal) {
         ++s.empty_regions;
         return boost::none;
+      }
+      if(k == 0 && context_->ceiling_cost < std::numeric_limits<double>::infinity()) {
+        const Eigen::Vector3d midpoint = 0.5 * (to_eigen(profile.p0()) + to_eigen(profile.p1()));
+        // a margin for the solver's rounding: a bound near the ceiling solves the whole region
+        if(context_->cost(profile.v0(), profile.v1(), midpoint, frame.to_global(r.x)) >
+           (1. + 1e-6) * context_->ceiling_cost) {
+          ++s.placements_over_ceiling;
+          break;
+        }
       }
     }
     const Eigen::Vector3d x = frame.to_global(r.x);
