@@ -163,9 +163,7 @@ public:
       ++stats_.rounds;
       const std::size_t before = stats_.collapses;
       stopped_by_ceiling_ = stopped_at_max_error_ = false;
-      const double ceiling_length = ceiling_ * context_.diagonal;
-      context_.ceiling_cost = ceiling_ < std::numeric_limits<double>::infinity() ? ceiling_length * ceiling_length
-                                                                                 : ceiling_;
+      context_.ceiling_cost = (ceiling_ * context_.diagonal) * (ceiling_ * context_.diagonal);  // infinite without one
       stats_.stopping_error = 0.;
       Surface_mesh_simplification::edge_collapse(
           mesh_, stop,

@@ -211,9 +211,9 @@ public:
       if(same) continue;
       ++r.groups_differing;
       const auto gap = [](long long a, long long b) { return std::size_t(a > b ? a - b : b - a); };
-      r.border_mismatch += gap((long long)found[g].border_cycles, (long long)expected_[g].border_cycles);
-      r.mismatch += gap((long long)found[g].components, 1) +
-                    gap((long long)found[g].border_cycles, (long long)expected_[g].border_cycles) +
+      const std::size_t borders = gap((long long)found[g].border_cycles, (long long)expected_[g].border_cycles);
+      r.border_mismatch += borders;
+      r.mismatch += gap((long long)found[g].components, 1) + borders +
                     (crossing_[g] ? 0 : (gap(found[g].euler_characteristic, expected_[g].euler_characteristic) + 1) / 2);
       if(!r.difference.empty()) continue;
       std::size_t size = 0;
