@@ -194,7 +194,7 @@ TEST(AngleCertification, FilteredPredicateMatchesExactAndOracle)
   std::uniform_real_distribution<double> coordinate(-1., 1.);
   std::uniform_int_distribution<int> ulps(-2, 2);
   const double bound_pairs[][2] = {{30, 90}, {35, 85}, {20, 120}, {45, 135}, {0, 180}, {33.3, 91.7}};
-  int decided_by_oracle = 0;
+  int decided_by_oracle = 0, decided_in_doubles = 0;
   for(const auto& pair : bound_pairs) {
     const NR::Angle_bounds bounds(pair[0], pair[1]);
     for(int trial = 0; trial < 3000; ++trial) {
@@ -222,6 +222,10 @@ TEST(AngleCertification, FilteredPredicateMatchesExactAndOracle)
       const std::array<const double*, 3> t = {raw[0], raw[1], raw[2]};
       const auto filtered = NR::internal::triangle_verdict(t, bounds);
       const auto exact = NR::internal::triangle_verdict_with<CGAL::Exact_rational>(t, bounds);
+      if(NR::internal::surely_within_bounds(t, bounds)) {
+        ASSERT_TRUE(exact.within_bounds()) << "the double filter accepted a triangle outside the bounds";
+        ++decided_in_doubles;
+      }
       ASSERT_EQ(filtered.degenerate, exact.degenerate);
       for(int i = 0; i < 3 && !exact.degenerate; ++i) {
         ASSERT_EQ(filtered.corners[i].too_small, exact.corners[i].too_small);
@@ -237,6 +241,32 @@ TEST(AngleCertification, FilteredPredicateMatchesExactAndOracle)
     }
   }
   EXPECT_GT(decided_by_oracle, 10000);
+  EXPECT_GT(decided_in_doubles, 1000);  // the filter does decide the clear cases
+}
+
+// The double filter leaves to the exact path what it cannot bound: scales
+// where products would overflow or underflow, exact right angles, and
+// angles a few ulps from a bound.
+TEST(AngleCertification, DoubleFilterDefersAtExtremesAndBoundaries)
+{
+  const NR::Angle_bounds bounds;
+  const double base[3][3] = {{0, 0, 0}, {2, 0.1, 0}, {1, 1.5, 0.2}};  // well inside [30, 90]
+  for(int exponent : {-1000, -700, -300, -150, 0, 150, 300, 700, 1000}) {
+    double c[3][3];
+    for(int i = 0; i < 3; ++i)
+      for(int k = 0; k < 3; ++k) c[i][k] = std::ldexp(base[i][k], exponent);
+    const std::array<const double*, 3> t = {c[0], c[1], c[2]};
+    const bool in_range = exponent >= -150 && exponent <= 150;
+    EXPECT_EQ(NR::internal::surely_within_bounds(t, bounds), in_range) << "2^" << exponent;
+    EXPECT_EQ(NR::internal::triangle_verdict(t, bounds).within_bounds(),
+              NR::internal::triangle_verdict_with<CGAL::Exact_rational>(t, bounds).within_bounds())
+        << "2^" << exponent;
+  }
+  const double o[3] = {0, 0, 0}, x[3] = {1, 0, 0}, y[3] = {0, 1, 0};  // exactly 90 degrees at o
+  EXPECT_FALSE(NR::internal::surely_within_bounds({o, x, y}, bounds));
+  EXPECT_TRUE(NR::internal::triangle_verdict({o, x, y}, bounds).within_bounds());
+  const double a = 1. + std::ldexp(1., -30), b[3] = {a, a, 0}, narrow[3] = {a, -ulp_step(a, -1), 0};
+  EXPECT_FALSE(NR::internal::surely_within_bounds({o, b, narrow}, bounds));  // 90 degrees minus an ulp
 }
 
 // Whole meshes: counts of corners out of [30, 90] from an independent exact

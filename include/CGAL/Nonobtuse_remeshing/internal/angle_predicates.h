@@ -120,9 +120,49 @@ Triangle_verdict triangle_verdict_with(const std::array<const double*, 3>& t,
   return verdict;
 }
 
+// A semi-static filter in plain doubles, tried before the intervals: true
+// only when every corner's two tests above hold with a relative margin of
+// 2^-40, far above the rounding errors of this evaluation (at most about 8
+// ulps of the terms' magnitudes). The difference vectors' largest
+// components must lie in [2^-200, 2^200], so that no product overflows and
+// an underflowed term moves d by less than the absolute margin 2^-900. When
+// it returns true, every angle lies strictly inside the bounds (hence the
+// triangle is not degenerate), which is what the exact path would find;
+// anything else goes to the exact path.
+inline bool surely_within_bounds(const std::array<const double*, 3>& t, const Angle_bounds& bounds)
+{
+  constexpr double rel = 0x1p-40, tiny = 0x1p-900, low = 0x1p-200, high = 0x1p200;
+  const Cosine_bound& up = bounds.upper();
+  const Cosine_bound& lo = bounds.lower();
+  for(int i = 0; i < 3; ++i) {
+    const double* a = t[i];
+    const double* p = t[(i + 1) % 3];
+    const double* q = t[(i + 2) % 3];
+    const double ux = p[0] - a[0], uy = p[1] - a[1], uz = p[2] - a[2];
+    const double vx = q[0] - a[0], vy = q[1] - a[1], vz = q[2] - a[2];
+    const double mu = (std::max)({std::abs(ux), std::abs(uy), std::abs(uz)});
+    const double mv = (std::max)({std::abs(vx), std::abs(vy), std::abs(vz)});
+    if(!(mu >= low && mu <= high && mv >= low && mv <= high)) return false;  // NaN fails too
+    const double d = ux * vx + uy * vy + uz * vz;
+    const double e = rel * (std::abs(ux * vx) + std::abs(uy * vy) + std::abs(uz * vz)) + tiny;
+    const double d_lo = d - e, d_hi = d + e;  // the exact d lies in [d_lo, d_hi]
+    const double l = (ux * ux + uy * uy + uz * uz) * (vx * vx + vy * vy + vz * vz);
+    const double d2_max = (std::max)(d_lo * d_lo, d_hi * d_hi) * (1. + rel);
+    const double d2_min = (d_lo > 0. ? d_lo * d_lo : (d_hi < 0. ? d_hi * d_hi : 0.)) * (1. - rel);
+    const double q_up = up.factor_a * up.factor_b * l, q_lo = lo.factor_a * lo.factor_b * l;
+    const bool within_max =
+        up.sign >= 0 ? (d_lo > 0. && d2_min > q_up * (1. + rel)) : (d_lo > 0. || d2_max < q_up * (1. - rel));
+    const bool within_min =
+        lo.sign > 0 ? (d_hi < 0. || d2_max < q_lo * (1. - rel)) : (d_hi < 0. && d2_min > q_lo * (1. + rel));
+    if(!within_max || !within_min) return false;
+  }
+  return true;
+}
+
 inline Triangle_verdict triangle_verdict(const std::array<const double*, 3>& t,
                                          const Angle_bounds& bounds)
 {
+  if(surely_within_bounds(t, bounds)) return Triangle_verdict();  // not degenerate, every corner within
   {
     Protect_FPU_rounding<true> protection;
     try {
