@@ -47,14 +47,19 @@ void build(Tree& tree, const Pool& pool)
 }
 
 // The owner of every feature sample as the mesh's vertices move: its
-// nearest vertex, or, for a border sample, the nearest of the vertices
-// flagged as fitting the input's border (a border sample has none when no
-// vertex is flagged). The search trees over the vertices are rebuilt only
-// when a vertex has moved farther than `reach` since they were built. Until
-// then, with m the farthest move since, a sample's nearest vertex now is
-// within its nearest distance then plus m, so it was within that distance
-// plus 2m then, and a range search of the old tree finds it: the owners are
-// exact either way.
+// nearest vertex (the lowest index among equally near ones), or, for a
+// border sample, the nearest of the vertices flagged as fitting the input's
+// border (a border sample has none when no vertex is flagged).
+//
+// Between two calls most vertices keep their place. A sample whose owner did
+// not move can then only pass to a vertex that moved and is now at most as
+// near: each moved vertex looks for such samples in a search tree over the
+// samples, built once. The other samples search the trees over the vertices,
+// which are rebuilt only when a vertex has moved farther than `reach` since
+// they were built. Until then, with m the farthest move since, a sample's
+// nearest vertex now is within its nearest distance then plus m, so it was
+// within that distance plus 2m then, and a range search of the old tree
+// finds it. The owners are exact either way.
 class Feature_sample_owners
 {
   using Point = Epick::Point_3;
@@ -69,8 +74,21 @@ class Feature_sample_owners
 public:
   Feature_sample_owners(const std::vector<std::pair<Point, bool> >& samples, const std::vector<bool>& on_border,
                         double reach)
-    : samples_(samples), on_border_(on_border), reach_(reach)
-  {}
+    : samples_(samples), on_border_(on_border), reach_(reach), nearest_(samples.size()),
+      squared_(samples.size(), 0.)
+  {
+    for(const auto& sample : samples_) sample_points_.push_back(sample.first);
+    const std::vector<Point>& sample_points = sample_points_;
+    sample_map_ = make_property_map(sample_points);
+    std::vector<std::size_t> group[2];
+    for(std::size_t s = 0; s < samples_.size(); ++s) group[samples_[s].second ? 1 : 0].push_back(s);
+    for(int g = 0; g < 2; ++g)
+      if(!group[g].empty()) {
+        sample_trees_[g] =
+            std::make_unique<Tree>(group[g].begin(), group[g].end(), typename Tree::Splitter(), Adapter(sample_map_));
+        sample_trees_[g]->template build<Sequential_tag>();
+      }
+  }
 
   /// (vertex, sample) for every sample with an owner, sorted, for the
   /// vertices at `points`; the samples are searched for in parallel.
@@ -85,14 +103,44 @@ public:
     const bool rebuild = built_.size() != points.size() || !(move <= reach_);
     if(rebuild) build_trees(points, pool);
     const std::size_t none = points.size();
-    std::vector<std::size_t> nearest(samples_.size(), none);
+    // The samples whose owner stays unless a moved vertex comes as near.
+    std::vector<bool> moved(points.size(), true), kept(samples_.size(), false);
+    if(!rebuild)
+      for(std::size_t i = 0; i < points.size(); ++i) moved[i] = !(points[i] == last_[i]);
+    double reach[2] = {-1., -1.};  // per group, the farthest owner of a kept sample
+    for(std::size_t s = 0; s < samples_.size() && !rebuild; ++s)
+      if(nearest_[s] != none && !moved[nearest_[s]]) {
+        kept[s] = true;
+        double& r = reach[samples_[s].second ? 1 : 0];
+        r = (std::max)(r, squared_[s]);
+      }
+    for(std::size_t c = 0; c < points.size(); ++c) {
+      if(!moved[c] || rebuild) continue;
+      for(int g = 0; g < 2; ++g) {
+        if(reach[g] < 0. || (g == 1 && !on_border_[c])) continue;
+        std::vector<std::size_t> found;
+        sample_trees_[g]->search(std::back_inserter(found),
+                                 Sphere(points[c], std::sqrt(reach[g]) * (1. + 1e-9) + 1e-300, 0., Adapter(sample_map_)));
+        for(std::size_t s : found) {
+          if(!kept[s]) continue;
+          const double d = CGAL::squared_distance(points[c], samples_[s].first);
+          if(d < squared_[s] || (d == squared_[s] && c < nearest_[s])) {
+            nearest_[s] = c;
+            squared_[s] = d;
+          }
+        }
+      }
+    }
     pool.for_each(samples_.size(), [&](std::size_t s, int) {
+      if(kept[s]) return;
+      nearest_[s] = none;
       const Tree* tree = samples_[s].second ? border_.get() : all_.get();
       if(!tree) return;
       if(rebuild) {
         const Search search(*tree, samples_[s].first, 1, 0., true, Distance(map_));
-        nearest[s] = search.begin()->first;
+        nearest_[s] = search.begin()->first;
         distance_[s] = std::sqrt(search.begin()->second);
+        squared_[s] = CGAL::squared_distance(points[nearest_[s]], samples_[s].first);
         return;
       }
       std::vector<std::size_t> candidates;
@@ -102,16 +150,18 @@ public:
       double best = std::numeric_limits<double>::infinity();
       for(std::size_t c : candidates) {
         const double d = CGAL::squared_distance(points[c], samples_[s].first);
-        if(d < best || (d == best && c < nearest[s])) {
+        if(d < best || (d == best && c < nearest_[s])) {
           best = d;
-          nearest[s] = c;
+          nearest_[s] = c;
         }
       }
+      squared_[s] = best;
     });
+    last_ = points;
     std::vector<std::pair<std::size_t, std::size_t> > owner;
     owner.reserve(samples_.size());
     for(std::size_t s = 0; s < samples_.size(); ++s)
-      if(nearest[s] != none) owner.emplace_back(nearest[s], s);
+      if(nearest_[s] != none) owner.emplace_back(nearest_[s], s);
     std::sort(owner.begin(), owner.end());
     return owner;
   }
@@ -144,10 +194,16 @@ private:
   const std::vector<std::pair<Point, bool> >& samples_;
   const std::vector<bool>& on_border_;
   const double reach_;
+  std::vector<Point> sample_points_;
+  Point_map sample_map_;
+  std::unique_ptr<Tree> sample_trees_[2];  // over the samples off and on the border
   std::vector<Point> built_;  // the vertices' positions when the trees were built
+  std::vector<Point> last_;   // and at the previous call
   Point_map map_;
   std::unique_ptr<Tree> all_, border_;
-  std::vector<double> distance_;  // each sample's nearest distance then
+  std::vector<double> distance_;      // each sample's nearest distance when the trees were built
+  std::vector<std::size_t> nearest_;  // each sample's owner at the previous call
+  std::vector<double> squared_;       // and its squared distance then
 };
 
 } // namespace internal
