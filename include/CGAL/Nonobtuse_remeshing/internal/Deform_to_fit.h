@@ -735,6 +735,7 @@ private:
   std::unique_ptr<Feature_sample_owners> owners_;
   std::vector<Point> guard_points_;  // feature and face samples, for the distance guard
   double start_mesh_side_ = 0.;      // the guard's mesh side of the mesh as given (distance_guard.h)
+  std::vector<face_descriptor> guard_hints_;  // each guard point's closest face at the guard's last measurement
   std::vector<Eigen::Vector3d> initial_;  // positions in the mesh as given
   std::vector<Eigen::Vector3d> target_;
   std::vector<std::size_t> stamp_;

@@ -122,8 +122,9 @@ Triangle_verdict triangle_verdict_with(const std::array<const double*, 3>& t,
 
 // A semi-static filter in plain doubles, tried before the intervals: true
 // only when every corner's two tests above hold with a relative margin of
-// 2^-40, far above the rounding errors of this evaluation (at most about 8
-// ulps of the terms' magnitudes). The difference vectors' largest
+// 2^-46 (128 units in the last place), above the rounding errors of this
+// evaluation (d is off by at most about 7 units of the sum of its terms'
+// magnitudes, the squared quantities by at most about 15 units). The difference vectors' largest
 // components must lie in [2^-200, 2^200], so that no product overflows and
 // an underflowed term moves d by less than the absolute margin 2^-900. When
 // it returns true, every angle lies strictly inside the bounds (hence the
@@ -131,7 +132,7 @@ Triangle_verdict triangle_verdict_with(const std::array<const double*, 3>& t,
 // anything else goes to the exact path.
 inline bool surely_within_bounds(const std::array<const double*, 3>& t, const Angle_bounds& bounds)
 {
-  constexpr double rel = 0x1p-40, tiny = 0x1p-900, low = 0x1p-200, high = 0x1p200;
+  constexpr double rel = 0x1p-46, tiny = 0x1p-900, low = 0x1p-200, high = 0x1p200;
   const Cosine_bound& up = bounds.upper();
   const Cosine_bound& lo = bounds.lower();
   for(int i = 0; i < 3; ++i) {

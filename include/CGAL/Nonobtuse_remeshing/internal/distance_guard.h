@@ -78,8 +78,14 @@ struct Start_point_map
 // spacing, and points along its sharp and border edges; and points on its
 // faces, add_face_samples) from the mesh with its vertices at `points`.
 // With `far`, also the corners of the face closest to each guard point
-// farther than `limit`. Queries run on the fit's workers; the result does
-// not depend on their number.
+// farther than `limit`. Each query starts from the face found closest at
+// the previous measurement (the vertices moved little since), which lets
+// the tree prune at once. Where two faces are equally close (a point
+// nearest to their common edge, as on CAD parts), the face found depends on
+// the start, and so would the vertices moved back: the points farther than
+// `limit`, and the farthest (both within a relative 1e-9), are asked again
+// without a start, so that the result is that of unhinted queries. Queries
+// run on the fit's workers; the result does not depend on their number.
 template <typename Fit, typename Points>
 double input_side(Fit& fit, const Points& points, double limit, Vertex_list* far)
 {
@@ -88,17 +94,47 @@ double input_side(Fit& fit, const Points& points, double limit, Vertex_list* far
   using Tree = AABB_tree<AABB_traits<Epick, Primitive> >;
   const std::vector<Epick::Point_3>& guard = fit.guard_points_;
   Tree tree(faces(fit.mesh_).first, faces(fit.mesh_).second, fit.mesh_, points);
+  std::vector<typename Fit::face_descriptor>& hints = fit.guard_hints_;
+  const bool hinted = hints.size() == guard.size();
+  // The search tree of hints first: built after the tree, it would see the
+  // primitives in the order the tree's construction left them, and the
+  // unhinted queries would answer ties differently.
   tree.accelerate_distance_queries();
-  std::vector<std::pair<double, typename Fit::face_descriptor> > nearest(guard.size());
+  tree.build();
+  hints.resize(guard.size());
+  std::vector<double> nearest(guard.size());
   fit.pool_.for_each(guard.size(), [&](std::size_t s, int) {
-    const auto hit = tree.closest_point_and_primitive(guard[s]);
-    nearest[s] = std::make_pair(std::sqrt(CGAL::squared_distance(guard[s], hit.first)), hit.second);
+    std::pair<Epick::Point_3, typename Fit::face_descriptor> hit;
+    if(hinted) {
+      const auto h = halfedge(hints[s], fit.mesh_);
+      const Epick::Triangle_3 t(get(points, source(h, fit.mesh_)), get(points, target(h, fit.mesh_)),
+                                get(points, target(next(h, fit.mesh_), fit.mesh_)));
+      hit = tree.closest_point_and_primitive(
+          guard[s], std::make_pair(Epick().construct_projected_point_3_object()(t, guard[s]), hints[s]));
+    } else {
+      hit = tree.closest_point_and_primitive(guard[s]);
+    }
+    nearest[s] = std::sqrt(CGAL::squared_distance(guard[s], hit.first));
+    hints[s] = hit.second;
   });
+  if(hinted && !guard.empty()) {
+    // a hinted distance may differ from the unhinted one in its last bits
+    const double band = 1. - 1e-9, top = *std::max_element(nearest.begin(), nearest.end());
+    std::vector<std::size_t> again;
+    for(std::size_t s = 0; s < guard.size(); ++s)
+      if(nearest[s] > band * limit || nearest[s] >= band * top) again.push_back(s);
+    fit.pool_.for_each(again.size(), [&](std::size_t j, int) {
+      const std::size_t s = again[j];
+      const auto hit = tree.closest_point_and_primitive(guard[s]);
+      nearest[s] = std::sqrt(CGAL::squared_distance(guard[s], hit.first));
+      hints[s] = hit.second;
+    });
+  }
   double farthest = 0.;
-  for(const auto& n : nearest) {
-    farthest = (std::max)(farthest, n.first);
-    if(far && n.first > limit)
-      for(auto v : vertices_around_face(halfedge(n.second, fit.mesh_), fit.mesh_)) far->add(get(fit.index_, v));
+  for(std::size_t s = 0; s < guard.size(); ++s) {
+    farthest = (std::max)(farthest, nearest[s]);
+    if(far && nearest[s] > limit)
+      for(auto v : vertices_around_face(halfedge(hints[s], fit.mesh_), fit.mesh_)) far->add(get(fit.index_, v));
   }
   return farthest;
 }
