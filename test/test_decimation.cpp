@@ -139,7 +139,7 @@ TEST(Decimation, PlacementQpAgreesWithCgalQpSolver)
     }
     put(context.quadrics, v, q);
   }
-  std::size_t compared = 0, optimal = 0, agree = 0;
+  std::size_t compared = 0, optimal = 0, agree = 0, bounded = 0, much_lower = 0;
   for(auto e : edges(mesh)) {
     if(compared == 1500) break;
     const auto h = halfedge(e, mesh);
@@ -151,7 +151,20 @@ TEST(Decimation, PlacementQpAgreesWithCgalQpSolver)
     const auto fast = NR::internal::solve_small_qp(qp);
     const auto reference = NR::internal::solve_small_qp_reference(qp);
     ++compared;
-    if(reference.status == NR::internal::Qp_status::optimal) ++optimal;
+    if(reference.status == NR::internal::Qp_status::optimal) {
+      ++optimal;
+      // the form's unconstrained minimum, which may leave an edge over the
+      // ceiling before any region is built, is a lower bound of its cost
+      const Eigen::Vector3d midpoint =
+          0.5 * (NR::internal::to_eigen(mesh.point(source(h, mesh))) + NR::internal::to_eigen(mesh.point(target(h, mesh))));
+      Eigen::Vector3d x;
+      ASSERT_TRUE(context.unconstrained_minimum(source(h, mesh), target(h, mesh), midpoint, x));
+      const Eigen::Vector3d placed = frame.to_global(reference.x);
+      const double bound = context.cost(source(h, mesh), target(h, mesh), midpoint, x);
+      const double cost = context.cost(source(h, mesh), target(h, mesh), midpoint, placed);
+      if(bound <= cost + 1e-12 * context.cost_magnitude(source(h, mesh), target(h, mesh), midpoint, placed)) ++bounded;
+      if(bound < 0.5 * cost) ++much_lower;
+    }
     if(fast.status == reference.status &&
        (fast.status != NR::internal::Qp_status::optimal ||
         std::abs(qp.objective(fast.x) - qp.objective(reference.x)) <= 1e-7 * (1. + std::abs(qp.objective(reference.x)))))
@@ -161,6 +174,8 @@ TEST(Decimation, PlacementQpAgreesWithCgalQpSolver)
   EXPECT_GT(optimal, 100u);  // both outcomes are exercised
   EXPECT_LT(optimal, compared);
   EXPECT_EQ(agree, compared);
+  EXPECT_EQ(bounded, optimal);
+  EXPECT_GT(much_lower, 0u);  // the constraints do raise the cost above the bound
 }
 
 // A flat equilateral patch: every quadric is the same plane, so the tie

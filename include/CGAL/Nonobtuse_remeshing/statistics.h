@@ -128,7 +128,8 @@ struct Angle_bounded_decimation_statistics
   std::size_t qp_solves = 0;      ///< QPs of the placements (equation 6.4): a drum-free pre-test, then F(u, v)
   std::size_t qp_fallbacks = 0;   ///< solves handed to CGAL's QP solver by the fast path
   std::size_t empty_regions = 0;  ///< placements refused: F(u, v) empty or degenerate
-  /// placements left at the drum-free pre-test, whose cost was over the round's ceiling already
+  /// placements left before the whole region, whose cost was over the round's ceiling already
+  /// at the form's unconstrained minimum or at the drum-free pre-test
   std::size_t placements_over_ceiling = 0;
   std::size_t valence_refusals = 0;        ///< placements and collapses refused by the valence floor (attempts)
   std::size_t certification_refusals = 0;  ///< collapses refused by the exact certification (attempts)
@@ -138,7 +139,9 @@ struct Angle_bounded_decimation_statistics
   std::size_t relaxation_moves = 0;  ///< certified moves made by them
   double relaxation_seconds = 0.;
   double largest_collapse_error = 0.;  ///< sqrt of the largest cost collapsed
-  double stopping_error = 0.;          ///< sqrt of the cheapest cost left when the last round stopped at its ceiling
+  /// sqrt of the cheapest cost left when the last round stopped at its ceiling (of a lower bound of
+  /// it, for an edge left before its whole region was solved)
+  double stopping_error = 0.;
   Decimation_stop_reason stop_reason = Decimation_stop_reason::no_collapse_left;
   double seconds = 0.;
 };

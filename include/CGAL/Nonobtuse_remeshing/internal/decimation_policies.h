@@ -78,6 +78,27 @@ struct Decimation_context
     qp.a = 2. * (q.A * frame.origin + q.b) / frame.scale;
     return qp;
   }
+  // The unconstrained minimum of that form, a lower bound of its minimum
+  // over any region, at `x`: with y = x - m, (A + eps I) y = -(A m + b).
+  // False when it is not unique (no planes and no points: eps = 0).
+  bool unconstrained_minimum(vertex_descriptor v0, vertex_descriptor v1, const Eigen::Vector3d& midpoint,
+                             Eigen::Vector3d& x) const
+  {
+    const Quadric q = sum(v0, v1);
+    const double eps = tie_break(q);
+    if(!(eps > 0.)) return false;
+    const Eigen::Matrix3d H = q.A + eps * Eigen::Matrix3d::Identity();
+    x = midpoint + H.ldlt().solve(-(q.A * midpoint + q.b));
+    return x.allFinite();
+  }
+  // A bound on the rounding of cost() at x: the magnitudes of its terms.
+  double cost_magnitude(vertex_descriptor v0, vertex_descriptor v1, const Eigen::Vector3d& midpoint,
+                        const Eigen::Vector3d& x) const
+  {
+    const Quadric q = sum(v0, v1);
+    return std::abs(x.dot(q.A * x)) + 2. * std::abs(q.b.dot(x)) + std::abs(q.c) +
+           tie_break(q) * (x - midpoint).squaredNorm();
+  }
   // The value of that form at the world point x (equation 6.5 with the tie
   // break), clamped at 0 against rounding.
   double cost(vertex_descriptor v0, vertex_descriptor v1, const Eigen::Vector3d& midpoint,
@@ -134,6 +155,21 @@ public:
     if(!(frame.scale > 0.)) {
       ++s.empty_regions;
       return boost::none;
+    }
+    // Over the round's ceiling already at the form's unconstrained minimum
+    // (with margins for the rounding of both evaluations), the edge cannot be
+    // collapsed in this round: that minimum stands as its placement (its key
+    // in the queue), and no region is built.
+    if(context_->ceiling_cost < std::numeric_limits<double>::infinity()) {
+      const Eigen::Vector3d midpoint = 0.5 * (to_eigen(profile.p0()) + to_eigen(profile.p1()));
+      Eigen::Vector3d x;
+      if(context_->unconstrained_minimum(profile.v0(), profile.v1(), midpoint, x) &&
+         context_->cost(profile.v0(), profile.v1(), midpoint, x) >
+             (1. + 1e-6) * context_->ceiling_cost +
+                 1e-9 * context_->cost_magnitude(profile.v0(), profile.v1(), midpoint, x)) {
+        ++s.placements_over_ceiling;
+        return Point(x[0], x[1], x[2]);
+      }
     }
     const Small_qp form = context_->form(profile.v0(), profile.v1(), frame);
     // F(u, v) lies within its half-spaces without the drum (k = 0: U, V, R,
