@@ -146,7 +146,8 @@ TEST(Decimation, PlacementQpAgreesWithCgalQpSolver)
     const NR::internal::Local_frame frame = NR::internal::collapse_frame(mesh, mesh.points(), h);
     std::vector<NR::internal::Half_space> region;
     if(!NR::internal::collapse_feasible_region(mesh, mesh.points(), h, 2, frame, region)) continue;
-    NR::internal::Small_qp qp = context.form(source(h, mesh), target(h, mesh), frame);
+    const NR::internal::Quadric sum = context.sum(source(h, mesh), target(h, mesh));
+    NR::internal::Small_qp qp = context.form(sum, frame);
     for(const auto& s : region) qp.add_constraint(s.normal, s.offset);
     const auto fast = NR::internal::solve_small_qp(qp);
     const auto reference = NR::internal::solve_small_qp_reference(qp);
@@ -155,14 +156,14 @@ TEST(Decimation, PlacementQpAgreesWithCgalQpSolver)
       ++optimal;
       // the form's unconstrained minimum, which may leave an edge over the
       // ceiling before any region is built, is a lower bound of its cost
-      const Eigen::Vector3d midpoint =
-          0.5 * (NR::internal::to_eigen(mesh.point(source(h, mesh))) + NR::internal::to_eigen(mesh.point(target(h, mesh))));
+      const Eigen::Vector3d midpoint = 0.5 * (NR::internal::to_eigen(mesh.point(source(h, mesh))) +
+                                              NR::internal::to_eigen(mesh.point(target(h, mesh))));
       Eigen::Vector3d x;
-      ASSERT_TRUE(context.unconstrained_minimum(source(h, mesh), target(h, mesh), midpoint, x));
+      ASSERT_TRUE(context.unconstrained_minimum(sum, midpoint, x));
       const Eigen::Vector3d placed = frame.to_global(reference.x);
-      const double bound = context.cost(source(h, mesh), target(h, mesh), midpoint, x);
-      const double cost = context.cost(source(h, mesh), target(h, mesh), midpoint, placed);
-      if(bound <= cost + 1e-12 * context.cost_magnitude(source(h, mesh), target(h, mesh), midpoint, placed)) ++bounded;
+      const double bound = context.cost(sum, midpoint, x);
+      const double cost = context.cost(sum, midpoint, placed);
+      if(bound <= cost + 1e-12 * context.cost_magnitude(sum, midpoint, placed)) ++bounded;
       if(bound < 0.5 * cost) ++much_lower;
     }
     if(fast.status == reference.status &&

@@ -124,9 +124,10 @@ Triangle_verdict triangle_verdict_with(const std::array<const double*, 3>& t,
 // only when every corner's two tests above hold with a relative margin of
 // 2^-46 (128 units in the last place), above the rounding errors of this
 // evaluation (d is off by at most about 7 units of the sum of its terms'
-// magnitudes, the squared quantities by at most about 15 units). The difference vectors' largest
-// components must lie in [2^-200, 2^200], so that no product overflows and
-// an underflowed term moves d by less than the absolute margin 2^-900. When
+// magnitudes, the squared quantities by at most about 15 units). The
+// difference vectors' largest components must lie in [2^-200, 2^200], so
+// that no product overflows and an underflowed term moves d by less than
+// the absolute margin 2^-900. When
 // it returns true, every angle lies strictly inside the bounds (hence the
 // triangle is not degenerate), which is what the exact path would find;
 // anything else goes to the exact path.

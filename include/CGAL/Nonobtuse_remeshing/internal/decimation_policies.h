@@ -58,7 +58,7 @@ struct Decimation_context
 
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
 
-  // Q_u + Q_v of the edge (v0, v1) and the weight eps of its tie break.
+  // Q_u + Q_v of the edge (v0, v1), and the weight eps of its tie break.
   Quadric sum(vertex_descriptor v0, vertex_descriptor v1) const
   {
     Quadric q = get(quadrics, v0);
@@ -67,12 +67,11 @@ struct Decimation_context
   }
   static double tie_break(const Quadric& q) { return 1e-3 * q.A.trace() / 3.; }
 
-  // The form of the file comment for the edge (v0, v1), in the frame's
-  // coordinates x_world = origin + scale x, divided by scale^2 (which leaves
-  // the minimizer alone): 1/2 x^T G x + a^T x.
-  Small_qp form(vertex_descriptor v0, vertex_descriptor v1, const Local_frame& frame) const
+  // The form of the file comment for the edge with quadric sum q, in the
+  // frame's coordinates x_world = origin + scale x, divided by scale^2 (which
+  // leaves the minimizer alone): 1/2 x^T G x + a^T x.
+  static Small_qp form(const Quadric& q, const Local_frame& frame)
   {
-    const Quadric q = sum(v0, v1);
     Small_qp qp;
     qp.G = 2. * (q.A + tie_break(q) * Eigen::Matrix3d::Identity());
     qp.a = 2. * (q.A * frame.origin + q.b) / frame.scale;
@@ -81,10 +80,8 @@ struct Decimation_context
   // The unconstrained minimum of that form, a lower bound of its minimum
   // over any region, at `x`: with y = x - m, (A + eps I) y = -(A m + b).
   // False when it is not unique (no planes and no points: eps = 0).
-  bool unconstrained_minimum(vertex_descriptor v0, vertex_descriptor v1, const Eigen::Vector3d& midpoint,
-                             Eigen::Vector3d& x) const
+  static bool unconstrained_minimum(const Quadric& q, const Eigen::Vector3d& midpoint, Eigen::Vector3d& x)
   {
-    const Quadric q = sum(v0, v1);
     const double eps = tie_break(q);
     if(!(eps > 0.)) return false;
     const Eigen::Matrix3d H = q.A + eps * Eigen::Matrix3d::Identity();
@@ -92,19 +89,15 @@ struct Decimation_context
     return x.allFinite();
   }
   // A bound on the rounding of cost() at x: the magnitudes of its terms.
-  double cost_magnitude(vertex_descriptor v0, vertex_descriptor v1, const Eigen::Vector3d& midpoint,
-                        const Eigen::Vector3d& x) const
+  static double cost_magnitude(const Quadric& q, const Eigen::Vector3d& midpoint, const Eigen::Vector3d& x)
   {
-    const Quadric q = sum(v0, v1);
     return std::abs(x.dot(q.A * x)) + 2. * std::abs(q.b.dot(x)) + std::abs(q.c) +
            tie_break(q) * (x - midpoint).squaredNorm();
   }
   // The value of that form at the world point x (equation 6.5 with the tie
   // break), clamped at 0 against rounding.
-  double cost(vertex_descriptor v0, vertex_descriptor v1, const Eigen::Vector3d& midpoint,
-              const Eigen::Vector3d& x) const
+  static double cost(const Quadric& q, const Eigen::Vector3d& midpoint, const Eigen::Vector3d& x)
   {
-    const Quadric q = sum(v0, v1);
     return (std::max)(0., q(x) + tie_break(q) * (x - midpoint).squaredNorm());
   }
 
@@ -156,22 +149,21 @@ public:
       ++s.empty_regions;
       return boost::none;
     }
+    const Quadric q = context_->sum(profile.v0(), profile.v1());
+    const Eigen::Vector3d midpoint = 0.5 * (to_eigen(profile.p0()) + to_eigen(profile.p1()));
+    const bool ceiling = context_->ceiling_cost < std::numeric_limits<double>::infinity();
     // Over the round's ceiling already at the form's unconstrained minimum
     // (with margins for the rounding of both evaluations), the edge cannot be
     // collapsed in this round: that minimum stands as its placement (its key
     // in the queue), and no region is built.
-    if(context_->ceiling_cost < std::numeric_limits<double>::infinity()) {
-      const Eigen::Vector3d midpoint = 0.5 * (to_eigen(profile.p0()) + to_eigen(profile.p1()));
-      Eigen::Vector3d x;
-      if(context_->unconstrained_minimum(profile.v0(), profile.v1(), midpoint, x) &&
-         context_->cost(profile.v0(), profile.v1(), midpoint, x) >
-             (1. + 1e-6) * context_->ceiling_cost +
-                 1e-9 * context_->cost_magnitude(profile.v0(), profile.v1(), midpoint, x)) {
-        ++s.placements_over_ceiling;
-        return Point(x[0], x[1], x[2]);
-      }
+    Eigen::Vector3d low;
+    if(ceiling && Context::unconstrained_minimum(q, midpoint, low) &&
+       Context::cost(q, midpoint, low) >
+           (1. + 1e-6) * context_->ceiling_cost + 1e-9 * Context::cost_magnitude(q, midpoint, low)) {
+      ++s.placements_over_ceiling;
+      return Point(low[0], low[1], low[2]);
     }
-    const Small_qp form = context_->form(profile.v0(), profile.v1(), frame);
+    const Small_qp form = Context::form(q, frame);
     // F(u, v) lies within its half-spaces without the drum (k = 0: U, V, R,
     // S, T, no trigonometry), where four empty regions in five are empty
     // already, at about a third of the cost; then the whole region. The
@@ -194,11 +186,9 @@ public:
         ++s.empty_regions;
         return boost::none;
       }
-      if(k == 0 && context_->ceiling_cost < std::numeric_limits<double>::infinity()) {
-        const Eigen::Vector3d midpoint = 0.5 * (to_eigen(profile.p0()) + to_eigen(profile.p1()));
+      if(k == 0 && ceiling) {
         // a margin for the solver's rounding: a bound near the ceiling solves the whole region
-        if(context_->cost(profile.v0(), profile.v1(), midpoint, frame.to_global(r.x)) >
-           (1. + 1e-6) * context_->ceiling_cost) {
+        if(Context::cost(q, midpoint, frame.to_global(r.x)) > (1. + 1e-6) * context_->ceiling_cost) {
           ++s.placements_over_ceiling;
           break;
         }
@@ -226,7 +216,7 @@ public:
   {
     if(!placement) return boost::none;
     const Eigen::Vector3d midpoint = 0.5 * (to_eigen(profile.p0()) + to_eigen(profile.p1()));
-    return context_->cost(profile.v0(), profile.v1(), midpoint, to_eigen(*placement));
+    return Context::cost(context_->sum(profile.v0(), profile.v1()), midpoint, to_eigen(*placement));
   }
 
 private:

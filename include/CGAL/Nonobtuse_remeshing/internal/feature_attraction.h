@@ -91,7 +91,8 @@ public:
   }
 
   /// (vertex, sample) for every sample with an owner, sorted, for the
-  /// vertices at `points`; the samples are searched for in parallel.
+  /// vertices at `points`; the samples that are not kept are searched for
+  /// in parallel.
   template <typename Pool>
   std::vector<std::pair<std::size_t, std::size_t> > operator()(const std::vector<Point>& points, Pool& pool)
   {
@@ -103,34 +104,10 @@ public:
     const bool rebuild = built_.size() != points.size() || !(move <= reach_);
     if(rebuild) build_trees(points, pool);
     const std::size_t none = points.size();
-    // The samples whose owner stays unless a moved vertex comes as near.
-    std::vector<bool> moved(points.size(), true), kept(samples_.size(), false);
-    if(!rebuild)
-      for(std::size_t i = 0; i < points.size(); ++i) moved[i] = !(points[i] == last_[i]);
-    double reach[2] = {-1., -1.};  // per group, the farthest owner of a kept sample
-    for(std::size_t s = 0; s < samples_.size() && !rebuild; ++s)
-      if(nearest_[s] != none && !moved[nearest_[s]]) {
-        kept[s] = true;
-        double& r = reach[samples_[s].second ? 1 : 0];
-        r = (std::max)(r, squared_[s]);
-      }
-    for(std::size_t c = 0; c < points.size(); ++c) {
-      if(!moved[c] || rebuild) continue;
-      for(int g = 0; g < 2; ++g) {
-        if(reach[g] < 0. || (g == 1 && !on_border_[c])) continue;
-        std::vector<std::size_t> found;
-        sample_trees_[g]->search(std::back_inserter(found),
-                                 Sphere(points[c], std::sqrt(reach[g]) * (1. + 1e-9) + 1e-300, 0., Adapter(sample_map_)));
-        for(std::size_t s : found) {
-          if(!kept[s]) continue;
-          const double d = CGAL::squared_distance(points[c], samples_[s].first);
-          if(d < squared_[s] || (d == squared_[s] && c < nearest_[s])) {
-            nearest_[s] = c;
-            squared_[s] = d;
-          }
-        }
-      }
-    }
+    // The kept samples: their owner did not move, so it stays unless a moved
+    // vertex comes as near (none after a rebuild, which searches them all).
+    std::vector<bool> kept(samples_.size(), false);
+    if(!rebuild) update_kept_samples(points, kept);
     pool.for_each(samples_.size(), [&](std::size_t s, int) {
       if(kept[s]) return;
       nearest_[s] = none;
@@ -167,6 +144,41 @@ public:
   }
 
 private:
+  // Marks the kept samples and hands each to the nearest of its owner and
+  // the moved vertices (the lowest index among equally near ones): a
+  // moved vertex searches the samples within the farthest kept owner's
+  // distance of its group.
+  void update_kept_samples(const std::vector<Point>& points, std::vector<bool>& kept)
+  {
+    std::vector<bool> moved(points.size());
+    for(std::size_t i = 0; i < points.size(); ++i) moved[i] = !(points[i] == last_[i]);
+    double farthest[2] = {-1., -1.};  // squared, per group (off and on the border); -1: no kept sample
+    for(std::size_t s = 0; s < samples_.size(); ++s)
+      if(nearest_[s] != points.size() && !moved[nearest_[s]]) {
+        kept[s] = true;
+        double& f = farthest[samples_[s].second ? 1 : 0];
+        f = (std::max)(f, squared_[s]);
+      }
+    std::vector<std::size_t> found;
+    for(std::size_t c = 0; c < points.size(); ++c) {
+      if(!moved[c]) continue;
+      for(int g = 0; g < 2; ++g) {
+        if(farthest[g] < 0. || (g == 1 && !on_border_[c])) continue;  // border samples: border vertices only
+        found.clear();
+        const double radius = std::sqrt(farthest[g]) * (1. + 1e-9) + 1e-300;
+        sample_trees_[g]->search(std::back_inserter(found), Sphere(points[c], radius, 0., Adapter(sample_map_)));
+        for(std::size_t s : found) {
+          if(!kept[s]) continue;
+          const double d = CGAL::squared_distance(points[c], samples_[s].first);
+          if(d < squared_[s] || (d == squared_[s] && c < nearest_[s])) {
+            nearest_[s] = c;
+            squared_[s] = d;
+          }
+        }
+      }
+    }
+  }
+
   template <typename Pool>
   void build_trees(const std::vector<Point>& points, Pool& pool)
   {
