@@ -118,6 +118,7 @@ public:
     hint_.resize(n);
     pool_.for_each(n, [&](std::size_t i, int) { hint_[i] = input_.closest(point(vertices_[i])); });
     target_.resize(n);
+    cost_.resize(n);
     stamp_.assign(n, 0);
     dirty_.assign(n, false);
     claimed_.assign(n, false);
@@ -217,6 +218,7 @@ private:
     Outcome outcome;
     double improvement;
     Eigen::Vector3d best;
+    double cost;  // the objective at the vertex, when its QP was solved
   };
 
   // Moves of vertices that share no edge cannot interact: each one's faces,
@@ -391,7 +393,9 @@ private:
   // returns false when F(v) is empty or cannot be built, or when no position
   // at all improves the vertex's objective by more than the threshold (then
   // no move is worth its QP: a cheap bound decides before F(v) is built).
-  bool solve(std::size_t i, Goal goal, Workspace& ws, Eigen::Vector3d& best, double& improvement) const
+  // `cost`, when given, receives the objective at the vertex.
+  bool solve(std::size_t i, Goal goal, Workspace& ws, Eigen::Vector3d& best, double& improvement,
+             double* cost = nullptr) const
   {
     const Local_frame f = frame(i);
     if(!(f.scale > 0.)) return false;
@@ -411,7 +415,9 @@ private:
       return false;
     }
     best = f.to_global(r.x);
-    improvement = o.value(f.origin) - o.value(best);  // H(v), equation 5.16
+    const double here = o.value(f.origin);
+    improvement = here - o.value(best);  // H(v), equation 5.16
+    if(cost) *cost = here;
     return true;
   }
 
@@ -437,13 +443,14 @@ private:
   void evaluate(Work& w, Workspace& ws) const
   {
     w.best = position(w.vertex);
-    if(!solve(w.vertex, Goal::fit, ws, w.best, w.improvement)) w.improvement = 0.;
+    if(!solve(w.vertex, Goal::fit, ws, w.best, w.improvement, &w.cost)) w.improvement = 0.;
   }
 
   void record_evaluation(const Work& w)
   {
     dirty_[w.vertex] = false;
     target_[w.vertex] = w.best;
+    cost_[w.vertex] = w.cost;
     queue_.push({w.improvement, w.vertex, ++stamp_[w.vertex]});
   }
 
@@ -518,7 +525,7 @@ private:
         continue;
       }
       claimed_[top.vertex] = true;
-      work_round_.push_back({top.vertex, evaluation, Outcome::evaluated, 0., Eigen::Vector3d::Zero()});
+      work_round_.push_back({top.vertex, evaluation, Outcome::evaluated, 0., Eigen::Vector3d::Zero(), 0.});
       if(!evaluation) ++moves;
     }
     for(const Entry& e : waiting) queue_.push(e);
@@ -530,7 +537,7 @@ private:
         evaluate(w, workspaces_[worker]);
         return;
       }
-      w.outcome = try_move(w.vertex, target_[w.vertex], true);
+      w.outcome = try_move(w.vertex, target_[w.vertex], &cost_[w.vertex]);
       if(w.outcome == Outcome::moved || w.outcome == Outcome::shortened) evaluate(w, workspaces_[worker]);
     });
     collect_counters();
@@ -572,12 +579,13 @@ private:
   }
 
   // Moves vertex i towards `target`, halving the step until the faces around
-  // it certify exactly (at most five times). With `check_descent`, a move
-  // whose new closest triangle leaves the vertex's cost no lower than before
-  // by the threshold is undone: D changes with the closest triangle, and
-  // without this test a vertex can hop between two triangles for ever.
-  // Writes vertex i's point and closest triangle only.
-  Outcome try_move(std::size_t i, const Eigen::Vector3d& target, bool check_descent)
+  // it certify exactly (at most five times). Given the vertex's current
+  // objective `cost_before` (its evaluation's: a clean vertex's objective has
+  // not changed since), a move whose new closest triangle leaves the vertex's
+  // cost no lower than before by the threshold is undone: D changes with the
+  // closest triangle, and without this test a vertex can hop between two
+  // triangles for ever. Writes vertex i's point and closest triangle only.
+  Outcome try_move(std::size_t i, const Eigen::Vector3d& target, const double* cost_before)
   {
     const Eigen::Vector3d from = position(i);
     const Point old_point = point(vertices_[i]);
@@ -588,10 +596,9 @@ private:
       if(p == old_point) break;  // rounds to no move
       if(!certified_at(i, p)) continue;
       const face_descriptor old_hint = hint_[i];
-      const double before = check_descent ? objective(i, Goal::fit).value(from) : 0.;
       put_point(vpm_, vertices_[i], p);
       hint_[i] = input_.closest(p, old_hint);
-      if(check_descent && !(objective(i, Goal::fit).value(to) < before - threshold_)) {
+      if(cost_before && !(objective(i, Goal::fit).value(to) < *cost_before - threshold_)) {
         put_point(vpm_, vertices_[i], old_point);
         hint_[i] = old_hint;
         return Outcome::undone;
@@ -612,9 +619,10 @@ private:
     }
   }
 
-  bool apply(std::size_t i, const Eigen::Vector3d& target, bool check_descent)
+  // Moves vertex i towards `target` without the descent test.
+  bool apply(std::size_t i, const Eigen::Vector3d& target)
   {
-    const Outcome outcome = try_move(i, target, check_descent);
+    const Outcome outcome = try_move(i, target, nullptr);
     record_move(outcome);
     return outcome == Outcome::moved || outcome == Outcome::shortened;
   }
@@ -660,7 +668,7 @@ private:
           if(!solve(w.vertex, Goal::smooth, workspaces_[worker], w.best, w.improvement) ||
              !(w.improvement > threshold_))
             return;
-          w.outcome = try_move(w.vertex, w.best, false);
+          w.outcome = try_move(w.vertex, w.best, nullptr);
         });
         collect_counters();
         for(const Work& w : work_) {
@@ -738,6 +746,7 @@ private:
   std::vector<face_descriptor> guard_hints_;  // each guard point's closest face at the guard's last measurement
   std::vector<Eigen::Vector3d> initial_;  // positions in the mesh as given
   std::vector<Eigen::Vector3d> target_;
+  std::vector<double> cost_;  // the objective at each vertex, as its evaluation found it
   std::vector<std::size_t> stamp_;
   std::vector<bool> dirty_;
   std::size_t moved_since_update_ = 0;

@@ -197,7 +197,7 @@ void guard_the_distance(Fit& fit)
         Eigen::Vector3d best;
         double improvement;
         if(fit.solve(i, Fit::Goal::restore, best, improvement) && improvement > fit.threshold_ &&
-           fit.apply(i, best, false))
+           fit.apply(i, best))
           ++moves;
       }
     Vertex_list still_far(fit.vertices_.size());

@@ -175,7 +175,7 @@ bool untangle_attempt(Fit& fit, const std::vector<std::size_t>& region, typename
       Eigen::Vector3d best;
       double improvement;
       if(fit.stopped()) break;
-      if(fit.solve(i, goal, best, improvement) && improvement > fit.threshold_ && fit.apply(i, best, false)) ++moves;
+      if(fit.solve(i, goal, best, improvement) && improvement > fit.threshold_ && fit.apply(i, best)) ++moves;
     }
   std::vector<std::pair<face_descriptor, face_descriptor> > left = intersecting_pairs(fit);
   if(left.size() < pairs.size() || (!strictly && left.size() == pairs.size())) {
