@@ -350,6 +350,7 @@ private:
     const double sample_weight = 4.;
     if(alpha > 0.) {
       const std::size_t owned = attracted_begin_[i + 1] - attracted_begin_[i];
+      o.points.reserve(owned + 2);  // the samples, the border point, the centre
       double w = alpha;
       if(on_input_border_[i]) {
         w /= double(1 + owned);

@@ -82,6 +82,11 @@ public:
   /// planes of the closest triangle and of the triangles around it).
   Quadric quadric(face_descriptor f) const
   {
+    Quadric q;
+    if(rings_ == 0) {  // the default, asked for at every evaluation: no lists
+      add_plane(f, q);
+      return q;
+    }
     std::vector<face_descriptor> chosen = {f}, ring = {f};
     for(int r = 1; r <= rings_; ++r) {
       std::vector<face_descriptor> next;
@@ -95,14 +100,17 @@ public:
             }
       ring.swap(next);
     }
-    Quadric q;
-    for(face_descriptor g : chosen) {
-      const Eigen::Vector3d unit = normal(g);
-      if(unit.isZero()) continue;  // degenerate: no plane
-      const Point& p = point(target(halfedge(g, input_), input_));
-      q.add_plane(unit, -unit.dot(Eigen::Vector3d(p.x(), p.y(), p.z())));
-    }
+    for(face_descriptor g : chosen) add_plane(g, q);
     return q;
+  }
+
+  /// Adds the supporting plane of `f` to `q`, none for a degenerate `f`.
+  void add_plane(face_descriptor f, Quadric& q) const
+  {
+    const Eigen::Vector3d unit = normal(f);
+    if(unit.isZero()) return;
+    const Point& p = point(target(halfedge(f, input_), input_));
+    q.add_plane(unit, -unit.dot(Eigen::Vector3d(p.x(), p.y(), p.z())));
   }
 
   /// Points the fitted mesh must come close to, with whether they lie on the

@@ -22,6 +22,8 @@
 #include <CGAL/QP_functions.h>
 #include <CGAL/QP_models.h>
 
+#include <boost/container/static_vector.hpp>
+
 #include <Eigen/Dense>
 
 #include <cmath>
@@ -72,8 +74,9 @@ inline Qp_result solve_small_qp(const Small_qp& qp, double tolerance = 1e-12, in
   const Eigen::Matrix3d G_inv = cholesky.solve(Eigen::Matrix3d::Identity());
   Eigen::Vector3d x = -G_inv * qp.a;
 
-  std::vector<int> active;        // indices of the active constraints
-  std::vector<double> multiplier; // their Lagrange multipliers (>= 0)
+  // at most three constraints are active (a fourth is dependent, below)
+  boost::container::static_vector<int, 3> active;        // indices of the active constraints
+  boost::container::static_vector<double, 3> multiplier; // their Lagrange multipliers (>= 0)
   const int m = int(qp.normals.size());
   auto slack = [&](int i) { return qp.normals[i].dot(x) - qp.offsets[i]; };
 
