@@ -120,20 +120,24 @@ inline bool edge_feasible_region(const Eigen::Vector3d& a, const Eigen::Vector3d
   const double theta_k = std::acos(std::sqrt((1. - alpha) / (1. + alpha)) / (2. * sqrt3));
   // the directions at angles i theta_k / k, i = 0..k, from n0 towards +-b0
   std::array<double, 17> cosine, sine;  // k <= 16
-  for(int i = 0; i <= k; ++i) {
+  cosine[0] = 1.;
+  sine[0] = 0.;
+  for(int i = 1; i <= k; ++i) {
     cosine[i] = std::cos(theta_k * i / k);
     sine[i] = std::sin(theta_k * i / k);
   }
   for(int side : {1, -1}) {
     auto direction = [&](int i) { return Eigen::Vector3d(cosine[i] * n0 + (side * sine[i]) * b0); };
+    // the barrel's points at angle i on the circles through a and b
+    Eigen::Vector3d m_prev = a + sqrt3 * L * direction(0), n_prev = b + sqrt3 * L * direction(0);
     for(int i = 1; i <= k; ++i) {
-      const Eigen::Vector3d d_prev = direction(i - 1);
       const Eigen::Vector3d d = direction(i);
-      const Eigen::Vector3d m_prev = a + sqrt3 * L * d_prev, m = a + sqrt3 * L * d;
-      const Eigen::Vector3d n_prev = b + sqrt3 * L * d_prev, n = b + sqrt3 * L * d;
+      const Eigen::Vector3d m = a + sqrt3 * L * d, n = b + sqrt3 * L * d;
       const Eigen::Vector3d w = q + (1. + 0.5 * sqrt3) * L * d;
       out.push_back(feasible::through(m_prev, m, w, q));                  // M_i
       out.push_back(feasible::through(n_prev, n, w, q));                  // N_i
+      m_prev = m;
+      n_prev = n;
     }
   }
   return true;
