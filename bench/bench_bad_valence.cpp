@@ -18,6 +18,8 @@
 #include <iostream>
 #include <string>
 
+#include "bench_main.h"
+
 namespace NR = CGAL::Nonobtuse_remeshing;
 using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
 
@@ -39,7 +41,7 @@ bool same_topology(const NR::Quality_report& a, const NR::Quality_report& b)
 
 } // namespace
 
-int main(int argc, char** argv)
+static int bench(int argc, char** argv)
 {
   if(argc < 2) {
     std::cerr << "usage: bench_bad_valence [N] mesh.off...\n";
@@ -83,3 +85,5 @@ int main(int argc, char** argv)
             << "% gone)\n";
   return 0;
 }
+
+int main(int argc, char** argv) { return nonobtuse_bench::guarded(bench, argc, argv); }

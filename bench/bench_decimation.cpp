@@ -23,6 +23,8 @@
 #include <string>
 #include <vector>
 
+#include "bench_main.h"
+
 namespace NR = CGAL::Nonobtuse_remeshing;
 using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
 
@@ -42,7 +44,7 @@ const char* reason(NR::Decimation_stop_reason r)
 
 } // namespace
 
-int main(int argc, char** argv)
+static int bench(int argc, char** argv)
 {
   int resolution = 100;
   double max_error = 0.;
@@ -98,3 +100,5 @@ int main(int argc, char** argv)
   }
   return 0;
 }
+
+int main(int argc, char** argv) { return nonobtuse_bench::guarded(bench, argc, argv); }

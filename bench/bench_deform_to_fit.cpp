@@ -16,10 +16,12 @@
 #include <iostream>
 #include <string>
 
+#include "bench_main.h"
+
 namespace NR = CGAL::Nonobtuse_remeshing;
 using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
 
-int main(int argc, char** argv)
+static int bench(int argc, char** argv)
 {
   if(argc < 2) {
     std::cerr << "usage: bench_deform_to_fit [N] mesh.off...\n";
@@ -64,3 +66,5 @@ int main(int argc, char** argv)
   }
   return 0;
 }
+
+int main(int argc, char** argv) { return nonobtuse_bench::guarded(bench, argc, argv); }

@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include "bench_main.h"
+
 namespace NR = CGAL::Nonobtuse_remeshing;
 using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
 
@@ -53,7 +55,7 @@ void run(const std::string& name, const Mesh& input, int repeat)
 
 } // namespace
 
-int main(int argc, char** argv)
+static int bench(int argc, char** argv)
 {
   int repeat = 3;
   std::vector<std::string> paths;
@@ -80,3 +82,5 @@ int main(int argc, char** argv)
   run("subdivided first mesh", fine, repeat);
   return 0;
 }
+
+int main(int argc, char** argv) { return nonobtuse_bench::guarded(bench, argc, argv); }

@@ -17,10 +17,12 @@
 #include <iostream>
 #include <random>
 
+#include "bench_main.h"
+
 namespace NR = CGAL::Nonobtuse_remeshing;
 using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
 
-int main(int argc, char** argv)
+static int bench(int argc, char** argv)
 {
   if(argc < 2) {
     std::cerr << "usage: bench_small_qp MESH [RESOLUTION]\n";
@@ -63,3 +65,5 @@ int main(int argc, char** argv)
             << "CGAL QP (exact Gmpzf):  " << reference.first * 1e6 << " us per solve\n";
   return 0;
 }
+
+int main(int argc, char** argv) { return nonobtuse_bench::guarded(bench, argc, argv); }

@@ -23,10 +23,12 @@
 #include <string>
 #include <vector>
 
+#include "bench_main.h"
+
 namespace NR = CGAL::Nonobtuse_remeshing;
 using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
 
-int main(int argc, char** argv)
+static int bench(int argc, char** argv)
 {
   std::size_t target = 10000;
   int max_threads = 2, repeat = 5;
@@ -84,3 +86,5 @@ int main(int argc, char** argv)
             << (m % 2 ? speedups[m / 2] : 0.5 * (speedups[m / 2 - 1] + speedups[m / 2])) << "\n";
   return 0;
 }
+
+int main(int argc, char** argv) { return nonobtuse_bench::guarded(bench, argc, argv); }

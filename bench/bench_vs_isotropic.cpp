@@ -38,6 +38,8 @@
 #include <string>
 #include <vector>
 
+#include "bench_main.h"
+
 namespace NR = CGAL::Nonobtuse_remeshing;
 namespace PMP = CGAL::Polygon_mesh_processing;
 using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
@@ -74,7 +76,7 @@ double median(std::vector<double> values)
 
 } // namespace
 
-int main(int argc, char** argv)
+static int bench(int argc, char** argv)
 {
   int resolution = 100, iterations = 3, threads = 1;
   double oversampling = 1., max_distance = 0.;
@@ -185,3 +187,5 @@ int main(int argc, char** argv)
   else std::cout << "median Hausdorff ratio (nonobtuse / isotropic): " << median(distance_ratios) << "\n";
   return 0;
 }
+
+int main(int argc, char** argv) { return nonobtuse_bench::guarded(bench, argc, argv); }
