@@ -58,7 +58,7 @@ struct Decimation_context
 
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
 
-  // Q_u + Q_v of the edge (v0, v1), and the weight eps of its tie break.
+  // Q_u + Q_v of the edge (v0, v1); then the weight eps of its tie break.
   Quadric sum(vertex_descriptor v0, vertex_descriptor v1) const
   {
     Quadric q = get(quadrics, v0);

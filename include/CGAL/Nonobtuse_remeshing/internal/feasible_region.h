@@ -129,7 +129,8 @@ inline bool edge_feasible_region(const Eigen::Vector3d& a, const Eigen::Vector3d
   for(int side : {1, -1}) {
     auto direction = [&](int i) { return Eigen::Vector3d(cosine[i] * n0 + (side * sine[i]) * b0); };
     // the barrel's points at angle i on the circles through a and b
-    Eigen::Vector3d m_prev = a + sqrt3 * L * direction(0), n_prev = b + sqrt3 * L * direction(0);
+    const Eigen::Vector3d d0 = direction(0);
+    Eigen::Vector3d m_prev = a + sqrt3 * L * d0, n_prev = b + sqrt3 * L * d0;
     for(int i = 1; i <= k; ++i) {
       const Eigen::Vector3d d = direction(i);
       const Eigen::Vector3d m = a + sqrt3 * L * d, n = b + sqrt3 * L * d;
