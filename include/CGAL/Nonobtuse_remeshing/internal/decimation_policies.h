@@ -178,10 +178,13 @@ public:
         ++s.empty_regions;
         return boost::none;
       }
-      Small_qp qp = form;
-      for(const Half_space& h : region_) qp.add_constraint(h.normal, h.offset);
+      qp_.G = form.G;
+      qp_.a = form.a;
+      qp_.normals.clear();
+      qp_.offsets.clear();
+      for(const Half_space& h : region_) qp_.add_constraint(h.normal, h.offset);
       ++s.qp_solves;
-      r = solve_small_qp_with_fallback(qp, &s.qp_fallbacks);
+      r = solve_small_qp_with_fallback(qp_, &s.qp_fallbacks);
       if(r.status != Qp_status::optimal) {
         ++s.empty_regions;
         return boost::none;
@@ -200,7 +203,9 @@ public:
 
 private:
   const Context* context_;
-  mutable std::vector<Half_space> region_;  // reused: edge_collapse holds the policy by const reference
+  // reused: edge_collapse holds the policy by const reference
+  mutable std::vector<Half_space> region_;
+  mutable Small_qp qp_;
 };
 
 /// Cost policy: equation 6.5, none without a placement.
