@@ -206,6 +206,7 @@ private:
   {
     std::vector<Half_space> region;
     Small_qp qp;
+    Objective objective;
     std::size_t qp_solves = 0, qp_fallbacks = 0, infeasible_regions = 0;
   };
 
@@ -316,12 +317,16 @@ private:
   // the initial mesh (untangling).
   enum class Goal { fit, smooth, restore };
 
-  Objective objective(std::size_t i, Goal goal) const
+  // Written into `o` (a worker's, reused: no allocation once its vector
+  // has grown).
+  void objective(std::size_t i, Goal goal, Objective& o) const
   {
-    Objective o;
+    o.quadric = Quadric();
+    o.quadric_weight = 0.;
+    o.points.clear();
     if(goal == Goal::restore) {
       o.points.push_back({initial_[i], 1., Eigen::Matrix3d::Identity()});
-      return o;
+      return;
     }
     const bool smoothing_only = goal == Goal::smooth;
     const vertex_descriptor v = vertices_[i];
@@ -373,7 +378,6 @@ private:
       }
     }
     o.points.push_back({centre, beta, metric});
-    return o;
   }
 
   // The frame of vertex i's one-ring: centred on the vertex, scaled by its
@@ -400,7 +404,8 @@ private:
   {
     const Local_frame f = frame(i);
     if(!(f.scale > 0.)) return false;
-    const Objective o = objective(i, goal);
+    Objective& o = ws.objective;
+    objective(i, goal, o);
     o.local_form(f, ws.qp.G, ws.qp.a);
     if(!(Objective::largest_decrease(f, ws.qp.G, ws.qp.a) > threshold_)) return false;
     ws.region.clear();
@@ -538,7 +543,7 @@ private:
         evaluate(w, workspaces_[worker]);
         return;
       }
-      w.outcome = try_move(w.vertex, target_[w.vertex], &cost_[w.vertex]);
+      w.outcome = try_move(w.vertex, target_[w.vertex], workspaces_[worker], &cost_[w.vertex]);
       if(w.outcome == Outcome::moved || w.outcome == Outcome::shortened) evaluate(w, workspaces_[worker]);
     });
     collect_counters();
@@ -585,8 +590,9 @@ private:
   // not changed since), a move whose new closest triangle leaves the vertex's
   // cost no lower than before by the threshold is undone: D changes with the
   // closest triangle, and without this test a vertex can hop between two
-  // triangles for ever. Writes vertex i's point and closest triangle only.
-  Outcome try_move(std::size_t i, const Eigen::Vector3d& target, const double* cost_before)
+  // triangles for ever. Writes vertex i's point and closest triangle, and
+  // the worker's scratch objective in `ws`, only.
+  Outcome try_move(std::size_t i, const Eigen::Vector3d& target, Workspace& ws, const double* cost_before)
   {
     const Eigen::Vector3d from = position(i);
     const Point old_point = point(vertices_[i]);
@@ -599,10 +605,13 @@ private:
       const face_descriptor old_hint = hint_[i];
       put_point(vpm_, vertices_[i], p);
       hint_[i] = input_.closest(p, old_hint);
-      if(cost_before && !(objective(i, Goal::fit).value(to) < *cost_before - threshold_)) {
-        put_point(vpm_, vertices_[i], old_point);
-        hint_[i] = old_hint;
-        return Outcome::undone;
+      if(cost_before) {
+        objective(i, Goal::fit, ws.objective);
+        if(!(ws.objective.value(to) < *cost_before - threshold_)) {
+          put_point(vpm_, vertices_[i], old_point);
+          hint_[i] = old_hint;
+          return Outcome::undone;
+        }
       }
       return attempt > 0 ? Outcome::shortened : Outcome::moved;
     }
@@ -623,7 +632,7 @@ private:
   // Moves vertex i towards `target` without the descent test.
   bool apply(std::size_t i, const Eigen::Vector3d& target)
   {
-    const Outcome outcome = try_move(i, target, nullptr);
+    const Outcome outcome = try_move(i, target, workspaces_[0], nullptr);
     record_move(outcome);
     return outcome == Outcome::moved || outcome == Outcome::shortened;
   }
@@ -669,7 +678,7 @@ private:
           if(!solve(w.vertex, Goal::smooth, workspaces_[worker], w.best, w.improvement) ||
              !(w.improvement > threshold_))
             return;
-          w.outcome = try_move(w.vertex, w.best, nullptr);
+          w.outcome = try_move(w.vertex, w.best, workspaces_[worker], nullptr);
         });
         collect_counters();
         for(const Work& w : work_) {
