@@ -201,8 +201,33 @@ void guard_the_distance(Fit& fit)
           ++moves;
       }
     Vertex_list still_far(fit.vertices_.size());
-    const double after = moves > 0 ? guard_distance(fit, limit, &still_far) : distance;
-    const std::size_t pairs_after = moves > 0 && after < distance ? intersecting_pairs(fit).size() : pairs;
+    double after = moves > 0 ? guard_distance(fit, limit, &still_far) : distance;
+    std::size_t pairs_after = pairs;
+    const std::size_t untangling_moves = fit.stats_.untangling_moves;
+    if(moves > 0 && after < distance) {
+      // Moving back towards the start can bring back crossings the start
+      // mesh had and the untangling removed: the round's vertices of the
+      // crossing faces take the untangling's smoothing moves (up to three
+      // attempts), and the distance is measured again.
+      auto found = intersecting_pairs(fit);
+      Vertex_list in_round(fit.vertices_.size());
+      for(std::size_t i : region) in_round.add(i);
+      for(int attempt = 0; attempt < 3 && found.size() > pairs && !fit.stopped(); ++attempt) {
+        std::vector<std::size_t> own;
+        for(const auto& p : found)
+          for(auto f : {p.first, p.second})
+            for(auto w : vertices_around_face(halfedge(f, fit.mesh_), fit.mesh_))
+              if(in_round.chosen[get(fit.index_, w)]) own.push_back(get(fit.index_, w));
+        std::sort(own.begin(), own.end());
+        own.erase(std::unique(own.begin(), own.end()), own.end());
+        if(own.empty() || !untangle_attempt(fit, own, Fit::Goal::smooth, found, true)) break;
+      }
+      if(fit.stats_.untangling_moves != untangling_moves) {
+        still_far = Vertex_list(fit.vertices_.size());
+        after = guard_distance(fit, limit, &still_far);
+      }
+      pairs_after = found.size();
+    }
     if(after < distance && pairs_after <= pairs) {
       fit.stats_.guard_moves += moves;
       distance = after;
@@ -210,7 +235,8 @@ void guard_the_distance(Fit& fit)
       far = std::move(still_far);
       continue;
     }
-    fit.stats_.moves -= moves;
+    fit.stats_.moves -= moves + (fit.stats_.untangling_moves - untangling_moves);
+    fit.stats_.untangling_moves = untangling_moves;
     saved.restore(fit);
   }
   fit.stats_.intersecting_pairs = pairs;
