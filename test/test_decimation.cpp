@@ -4,7 +4,8 @@
 // QP against CGAL's solver, a flat hand-built patch, and the fitted meshes of
 // shipped samples decimated into a hierarchy whose every level, re-read from
 // its written file, certifies, keeps the topology and the valence floor;
-// early termination, cancellation (certified at every moment) and refusals.
+// levels of detail against rebuilds; early termination, cancellation
+// (certified at every moment) and refusals.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -236,6 +237,45 @@ TEST(Decimation, HierarchyOfTheSamples)
       EXPECT_LT(r.distance->hausdorff_symmetric, 5.) << name;  // % of the diagonal
       previous = r.distance->hausdorff_symmetric;
     }
+  }
+}
+
+// Levels of detail: each level, re-read from its written file, certifies,
+// keeps the topology, has at most its target's vertices, and is the closer
+// to the full mesh of the decimation's level and the rebuild. On the regular
+// right-angle grid of a cube, where collapses cut the creases, a rebuild is
+// kept; the choice is measured, so the sphere may keep either.
+TEST(Decimation, LevelsOfDetailKeepTheCloserOfDecimationAndRebuild)
+{
+  for(const std::string name : {"cube-meshed.off", "sphere.off"}) {
+    const Mesh full = fitted(name, 30);
+    const Topology topology(full);
+    const auto levels = NR::levels_of_detail(full, {0.5, 0.1});
+    ASSERT_EQ(levels.size(), 2u) << name;
+    std::size_t rebuilt = 0;
+    for(std::size_t i = 0; i < levels.size(); ++i) {
+      const auto& level = levels[i];
+      EXPECT_TRUE(level.reached) << name << " level " << i;
+      const Mesh reread = nonobtuse_test::written_and_reread(level.mesh, "lod.off");
+      EXPECT_LE(vertices(reread).size(), level.target_vertices) << name;
+      EXPECT_TRUE(NR::certify_angle_bounds(reread).is_certified()) << name << " level " << i;
+      const Topology t(reread);
+      EXPECT_EQ(t.euler, topology.euler) << name;
+      EXPECT_EQ(t.borders, topology.borders) << name;
+      EXPECT_EQ(t.components, topology.components) << name;
+      ASSERT_TRUE(level.rebuild_refused.empty()) << name << ": " << level.rebuild_refused;
+      ASSERT_GT(level.rebuilt_vertices, 0u) << name;
+      EXPECT_LE(level.rebuilt_vertices, level.target_vertices) << name;
+      // The kept level is the closer one, as measured again on the file.
+      const double kept = level.rebuilt ? level.rebuilt_distance : level.decimated_distance;
+      EXPECT_LE(kept, (std::min)(level.decimated_distance, level.rebuilt_distance)) << name;
+      const NR::Quality_report r = NR::quality_report(reread, &full);
+      EXPECT_NEAR(r.distance->hausdorff_symmetric / 100., kept, 2e-4) << name << " level " << i;
+      if(level.rebuilt) EXPECT_EQ(vertices(reread).size(), level.rebuilt_vertices) << name;
+      else EXPECT_EQ(vertices(reread).size(), level.statistics.vertices_after) << name;
+      rebuilt += level.rebuilt;
+    }
+    if(name == "cube-meshed.off") EXPECT_GE(rebuilt, 1u);
   }
 }
 

@@ -11,6 +11,7 @@
 //   remove_bad_valence_vertices()  bad valences out, by removal and split (5.7)
 //   deform_to_fit()         the fit with constrained smoothing (chapter 5)
 //   angle_bounded_decimation(), angle_bounded_decimation_hierarchy()  (chapter 6)
+//   levels_of_detail()      each level the closer of its decimation and a rebuild
 //   certify_angle_bounds()  exact certification of the angle bounds
 //   quality_report()        angles, valences, topology, defects, distances
 //   read_triangle_mesh(), write_mesh_atomically()  checked, exact file IO
@@ -41,6 +42,7 @@
 #include <CGAL/Nonobtuse_remeshing/remeshing_stages.h>
 #include <CGAL/Nonobtuse_remeshing/resolution_for_target_vertices.h>
 #include <CGAL/Nonobtuse_remeshing/nonobtuse_remesh.h>
+#include <CGAL/Nonobtuse_remeshing/levels_of_detail.h>
 #include <CGAL/Nonobtuse_remeshing/angle_pictures.h>
 
 #endif // CGAL_NONOBTUSE_REMESHING_H

@@ -102,16 +102,40 @@ NR::Angle_bounded_decimation_statistics decimate(Mesh& mesh, std::optional<doubl
   return s;
 }
 
-std::vector<NR::Decimation_level<Mesh> > decimation_levels(const Mesh& full, const std::vector<double>& ratios,
-                                                           const Decimation_settings& settings)
+std::vector<NR::Level_of_detail<Mesh> > decimation_levels(const Mesh& full, const std::vector<double>& ratios,
+                                                          const Decimation_settings& settings, bool rebuild)
 {
   Decimation_progress progress;
   progress.line.quiet = settings.quiet;
   progress.prefix = settings.progress_prefix;
   progress.last_target = std::size_t(std::llround(ratios.back() * double(vertices(full).size())));
-  auto levels = NR::angle_bounded_decimation_hierarchy(full, ratios, decimation_parameters(settings, progress));
+  std::vector<NR::Level_of_detail<Mesh> > levels;
+  if(rebuild) {
+    levels = NR::levels_of_detail(full, ratios, decimation_parameters(settings, progress));
+  } else {
+    for(auto& d : NR::angle_bounded_decimation_hierarchy(full, ratios, decimation_parameters(settings, progress))) {
+      levels.emplace_back();
+      static_cast<NR::Decimation_level<Mesh>&>(levels.back()) = std::move(d);
+      levels.back().rebuild_refused = "not asked (--no-level-rebuild)";
+    }
+  }
   progress.line.done();
   return levels;
+}
+
+void print_level_choice(std::ostream& out, std::size_t i, const NR::Level_of_detail<Mesh>& level)
+{
+  out << std::setprecision(4) << "level " << i << ": ";
+  if(level.rebuilt)
+    out << "the rebuild of the full mesh at its vertex count (" << 100. * level.rebuilt_distance
+        << "% from it) is closer than the decimation's level (" << 100. * level.decimated_distance << "%)";
+  else if(level.rebuilt_distance >= 0.)
+    out << "the decimation's level (" << 100. * level.decimated_distance << "% from the full mesh) is closer than "
+        << "the rebuild at its vertex count (" << 100. * level.rebuilt_distance << "%)";
+  else
+    out << "the decimation's level; no rebuild: " << level.rebuild_refused;
+  if(level.seconds > 0.) out << "; " << std::setprecision(3) << level.seconds << " s for the rebuild and distances";
+  out << "\n";
 }
 
 std::vector<double> parse_ratios(const std::string& text)

@@ -11,6 +11,7 @@
 #include "json_output.h"
 
 #include <CGAL/Nonobtuse_remeshing/angle_bounded_decimation.h>
+#include <CGAL/Nonobtuse_remeshing/levels_of_detail.h>
 
 #include <iosfwd>
 #include <optional>
@@ -48,9 +49,14 @@ CGAL::Nonobtuse_remeshing::Angle_bounded_decimation_statistics decimate(Mesh& me
                                                                         std::size_t target,
                                                                         const Decimation_settings& settings);
 
-// The hierarchy of `full` at `ratios`, one decimation.
-std::vector<CGAL::Nonobtuse_remeshing::Decimation_level<Mesh> > decimation_levels(
-    const Mesh& full, const std::vector<double>& ratios, const Decimation_settings& settings);
+// The hierarchy of `full` at `ratios`, one decimation; with `rebuild`, each
+// level against a rebuild of `full` at its vertex count, the closer kept
+// (levels_of_detail()).
+std::vector<CGAL::Nonobtuse_remeshing::Level_of_detail<Mesh> > decimation_levels(
+    const Mesh& full, const std::vector<double>& ratios, const Decimation_settings& settings, bool rebuild);
+
+// One line on the choice between a level's decimation and its rebuild.
+void print_level_choice(std::ostream& out, std::size_t i, const CGAL::Nonobtuse_remeshing::Level_of_detail<Mesh>& level);
 
 // "0.5,0.1" -> {0.5, 0.1}; throws std::invalid_argument unless the text is
 // a list of numbers.

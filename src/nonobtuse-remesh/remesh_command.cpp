@@ -255,6 +255,8 @@ int remesh_command(int argc, char** argv)
     ("lod", po::value<std::string>(&lod),
      "levels of detail: decreasing fractions of the vertices to keep, like 0.5,0.1; level i is written "
      "next to OUTPUT as NAME_lodi.EXT")
+    ("no-level-rebuild", "levels of detail by decimation alone: no rebuild of the output at a level's vertex "
+     "count, kept where it is closer (the default; see the manual)")
     ("report", po::value<std::string>(&report_path),
      "also write a JSON report: certification, quality against the input, the statistics of every stage "
      "(the thesis's Tables 4.1, 7.1, 7.2) and timings")
@@ -276,7 +278,8 @@ int remesh_command(int argc, char** argv)
                     "V when the fitted mesh is over it: refined for the input's topology, or\n"
                     "oversampled; with --resolution N, down to the vertices of the grid N when\n"
                     "it was refined for the topology); then, with --lod, levels of detail by\n"
-                    "angle-bounded decimation, each certified on its written file. --max-error\n"
+                    "angle-bounded decimation or, where closer to the output, by rebuilding the\n"
+                    "output at the level's vertex count, each certified on its written file. --max-error\n"
                     "applies to the levels only; the decimation stage stops at one cube of the\n"
                     "grid V or N alone gives.",
                     options, positional, argc, argv, vm, exit_code))
@@ -440,11 +443,12 @@ int remesh_command(int argc, char** argv)
     if(!ratios.empty()) {
       const auto levels_start = Clock::now();
       decimation.progress_prefix = "[" + std::to_string(progress.stages) + "/" + std::to_string(progress.stages) + "] ";
-      const auto levels = decimation_levels(output, ratios, decimation);
+      const auto levels = decimation_levels(output, ratios, decimation, vm.count("no-level-rebuild") == 0);
       for(std::size_t i = 0; i < levels.size(); ++i) {
         const auto& level = levels[i];
         const std::string path = level_path(output_path, i + 1);
         print_decimation(std::cout, level.statistics);
+        print_level_choice(std::cout, i + 1, level);
         std::size_t faces = 0;
         if(!write_certified(path, level.mesh, faces, coloring)) {
           std::cerr << "nonobtuse-remesh remesh: certification of the written level " << path
@@ -464,6 +468,12 @@ int remesh_command(int argc, char** argv)
         l["ratio"] = ratios[i];
         l["output"] = path;
         l["reached"] = level.reached;
+        l["rebuilt"] = level.rebuilt;
+        if(level.decimated_distance >= 0.) l["decimated_hausdorff_percent"] = 100. * level.decimated_distance;
+        if(level.rebuilt_distance >= 0.) l["rebuilt_hausdorff_percent"] = 100. * level.rebuilt_distance;
+        l["rebuilt_vertices"] = level.rebuilt_vertices;
+        if(!level.rebuild_refused.empty()) l["rebuild_refused"] = level.rebuild_refused;
+        l["rebuild_seconds"] = level.seconds;
         l["decimation"] = fields_json(level.statistics);
         l["report_against_full_resolution"] = report_to_json(path, report, {});
         levels_json.push_back(l);
