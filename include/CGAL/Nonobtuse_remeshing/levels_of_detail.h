@@ -16,6 +16,7 @@
 #include <CGAL/Nonobtuse_remeshing/angle_bounded_decimation.h>
 #include <CGAL/Nonobtuse_remeshing/exceptions.h>
 #include <CGAL/Nonobtuse_remeshing/internal/distance_measures.h>
+#include <CGAL/Nonobtuse_remeshing/internal/mesh_helpers.h>
 #include <CGAL/Nonobtuse_remeshing/nonobtuse_remesh.h>
 #include <CGAL/Nonobtuse_remeshing/parameters.h>
 
@@ -156,8 +157,8 @@ std::vector<Level_of_detail<TriangleMesh> > levels_of_detail(const TriangleMesh&
     if(level.rebuild_refused.empty()) {
       level.rebuilt_distance = distance(rebuild);
       if(level.rebuilt_distance < level.decimated_distance) {
-        level.mesh = TriangleMesh();  // a copy without the collapses' removed elements
-        copy_face_graph(rebuild, level.mesh);
+        internal::collect_garbage_of(rebuild, 0);  // the collapses' removed elements
+        level.mesh = std::move(rebuild);
         level.rebuilt = true;
         level.reached = vertices(level.mesh).size() <= level.target_vertices;
       }
