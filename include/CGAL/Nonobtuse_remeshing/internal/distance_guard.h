@@ -7,6 +7,8 @@
 // move back towards their start positions, certified exactly like any move
 // of the optimizer (Deform_to_fit.h), whose friends these functions are.
 
+#ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_DISTANCE_GUARD_H
+#define CGAL_NONOBTUSE_REMESHING_INTERNAL_DISTANCE_GUARD_H
 
 #include <CGAL/Nonobtuse_remeshing/internal/epick_points.h>
 #include <CGAL/Nonobtuse_remeshing/internal/untangling.h>
@@ -249,3 +251,4 @@ void guard_the_distance(Fit& fit)
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL
 
+#endif // CGAL_NONOBTUSE_REMESHING_INTERNAL_DISTANCE_GUARD_H
