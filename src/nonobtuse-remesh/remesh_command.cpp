@@ -245,6 +245,8 @@ int remesh_command(int argc, char** argv)
     ("no-feature-attraction", "fit: no attraction of the input's vertices and sharp edges")
     ("no-distance-guard", "fit: do not move back where the fit ended farther from the input than the mesh it "
                           "started from")
+    ("no-border-fill", "fit: do not fill the notches of the borders of an open input (faces added where the "
+                       "border lies inside the input's, then fitted again)")
     ("threads", po::value<int>(&decimation.threads)->default_value(0),
      "threads of the fit and of the levels' relaxation (0: one per core); the result is the same for any "
      "number")
@@ -373,6 +375,7 @@ int remesh_command(int argc, char** argv)
               NR::parameters::tangential_smoothing(vm.count("no-tangential-smoothing") == 0),
               NR::parameters::attract_features(vm.count("no-feature-attraction") == 0),
               NR::parameters::distance_guard(vm.count("no-distance-guard") == 0),
+              NR::parameters::fill_border_notches(vm.count("no-border-fill") == 0),
               NR::parameters::number_of_threads(decimation.threads),
               NR::parameters::remeshing_visitor(std::ref(progress)),
               NR::parameters::memory_budget(memory_limit * 1024. * 1024. * 1024.)));

@@ -60,7 +60,8 @@ Deform_to_fit_statistics deform_to_fit_with(TriangleMesh& mesh, VertexPointMap v
 /// region F(v); the vertex with the largest improvement moves first. Each
 /// move is certified exactly before it is applied (or shortened, or
 /// skipped), so `mesh` is certified at every moment, also when the budget
-/// runs out or the visitor cancels. The connectivity does not change.
+/// runs out or the visitor cancels. The connectivity does not change, except
+/// where border notches are filled (below).
 ///
 /// Beyond the thesis, two terms keep the fit close in the Hausdorff sense:
 /// S acts along the input's tangent plane only (`tangential_smoothing`), and
@@ -75,6 +76,23 @@ Deform_to_fit_statistics deform_to_fit_with(TriangleMesh& mesh, VertexPointMap v
 /// positions, certified like every move, in rounds kept only when they lower
 /// that distance and add no self-intersection; `start_distance` and
 /// `end_distance` in the statistics are the two values.
+///
+/// On an open input, the Marching Cubes leave each border as a staircase of
+/// the grid, its notches up to a cube inside the input's border, where the
+/// fit cannot pull them out without breaking the bounds. Once the queue
+/// converges, the notches of the borders that follow the input's are filled
+/// (`fill_border_notches`): a border vertex whose faces' angles sum to more
+/// than 200 degrees, a quarter of an edge or more inside the input's border,
+/// gets the face joining its two border neighbours, or two faces around a
+/// new border vertex where that face would be obtuse, each new face
+/// certified exactly and crossing no face of the mesh, only towards the
+/// input's border and over the input; the fit then goes on, at most four
+/// such passes. The Euler characteristic, the border cycles and the
+/// components stay; `mesh` gains the new vertices and faces. When the fit
+/// ends farther from the input with the fills than it would have without
+/// them (as the distance guard measures both), they are removed again and
+/// the fit ends as without them (`border_fills_undone`; a `Surface_mesh`
+/// keeps the removed elements as garbage, as after any Euler operation).
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{alpha} weight of the distance term D, in [0, 1]; default 0.5
@@ -103,6 +121,8 @@ Deform_to_fit_statistics deform_to_fit_with(TriangleMesh& mesh, VertexPointMap v
 ///     \cgalParamType{`bool`} \cgalParamNEnd
 ///   \cgalParamNBegin{distance_guard} moves back where the fit would end farther from the input than the mesh it started from (beyond the thesis); default true
 ///     \cgalParamType{`bool`} \cgalParamNEnd
+///   \cgalParamNBegin{fill_border_notches} fills the notches of the borders with faces that bring them out to the input's border (beyond the thesis); default true
+///     \cgalParamType{`bool`} \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads} threads that move vertices sharing no edge at the same
 ///     time (oneTBB; without it, one); 0 for one per core; the result is the same, bit for bit,
 ///     for any number; default 0
@@ -110,7 +130,7 @@ Deform_to_fit_statistics deform_to_fit_with(TriangleMesh& mesh, VertexPointMap v
 ///   \cgalParamNBegin{fit_visitor} progress and cancellation, see `Default_deform_to_fit_visitor`
 ///     (pass `std::ref(visitor)` to keep its state)
 ///     \cgalParamType{a model of `DeformToFitVisitor`} \cgalParamNEnd
-///   \cgalParamNBegin{vertex_point_map} the points of `mesh`, read and written; default the mesh's
+///   \cgalParamNBegin{vertex_point_map} the points of `mesh`, read and written (also for the vertices the border fills add); default the mesh's
 ///     internal point map
 ///     \cgalParamType{a model of `ReadWritePropertyMap` (`ReadablePropertyMap` for a mesh only read) with the vertex descriptors as keys and points with double coordinates as values} \cgalParamNEnd
 /// \cgalNamedParamsEnd

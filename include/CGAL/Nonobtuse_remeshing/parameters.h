@@ -45,6 +45,7 @@ namespace internal_np {
   X(tangential_smoothing_t, tangential_smoothing) /* S along the input only */  \
   X(attract_features_t, attract_features) /* input tips and creases hold */     \
   X(distance_guard_t, distance_guard)     /* the fit ends no farther */         \
+  X(fill_border_notches_t, fill_border_notches) /* border staircases filled */  \
   X(fit_visitor_t, fit_visitor)           /* progress and cancellation */      \
   X(vertex_split_t, vertex_split)         /* splits after removal */        \
   X(target_vertices_t, target_vertices)   /* vertices of the result */       \

@@ -96,6 +96,9 @@ struct Deform_to_fit_statistics
   double end_distance = 0.;           ///< the same at the end, at most `start_distance` unless
                                       ///< the guard's moves back could not bring it there
   std::size_t guard_moves = 0;        ///< moves back towards the start positions, by the distance guard
+  std::size_t border_notches_filled = 0;  ///< notches of the mesh's borders filled with faces (then fitted again)
+  std::size_t border_vertices_added = 0;  ///< vertices the fills added (one per fill with two faces)
+  bool border_fills_undone = false;       ///< fills were made, but the fit ended farther with them: removed
   double rms_distance = 0.;           ///< root mean square distance of the vertices to the input,
                                       ///< in % of the input's bounding-box diagonal (updated per phase)
   bool budget_exhausted = false;
@@ -228,6 +231,9 @@ void for_each_field(const Deform_to_fit_statistics& s, F&& f)
   f("start_distance_percent", s.start_distance);
   f("end_distance_percent", s.end_distance);
   f("guard_moves", s.guard_moves);
+  f("border_notches_filled", s.border_notches_filled);
+  f("border_vertices_added", s.border_vertices_added);
+  f("border_fills_undone", s.border_fills_undone);
   f("rms_vertex_distance_percent", s.rms_distance);
   f("budget_exhausted", s.budget_exhausted);
   f("cancelled", s.cancelled);

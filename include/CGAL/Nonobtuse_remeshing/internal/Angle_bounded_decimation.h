@@ -208,6 +208,7 @@ private:
     o.tolerance = options_.relaxation_tolerance;
     o.threads = options_.threads;
     o.distance_guard = false;  // each round's collapses moved the surface already; the error bound rules
+    o.fill_border_notches = false;  // the connectivity is the decimation's
     // the decimation's visitor decides
     auto fit_visitor = keep_going_relay([this](const Deform_to_fit_statistics&) { return visitor_.keep_going(stats_); });
     Deform_to_fit<TriangleMesh, VertexPointMap, Input, decltype(fit_visitor)> fit(mesh_, vpm_, closest,

@@ -327,6 +327,7 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
       stats.fit = deform_to_fit_with(output, get(CGAL::vertex_point, output), *surface,
                                      get_const_property_map(CGAL::vertex_point, *surface), settings.fit,
                                      settings.quadric_rings, keep_going_function<Deform_to_fit_statistics>(relay));
+      if(stats.fit.border_fills_undone) internal::collect_garbage_of(output, 0);  // the fills removed
       fitting += stats.fit.seconds;
       stats.fit.seconds = fitting;
       stats.fit_run = true;
