@@ -148,9 +148,9 @@ TEST(DeformToFit, FillsTheNotchesOfTheBorder)
   EXPECT_EQ(with_fill.intersecting_pairs, 0u);
 }
 
-// Fills that leave the fit farther from the input (as the distance guard
-// measures it) than before them are removed: the fit then ends as without
-// them, bit for bit. A measured case: the raw Marching Cubes mesh of
+// Fills with which the fit ends farther from the input (as the distance
+// guard measures it) than without them are removed: the fit then ends as
+// without them, bit for bit, on the written files. A measured case: the raw Marching Cubes mesh of
 // mesh_with_border at N = 60, whose fit after the fills moved on to a fold
 // that the untangling undid by moving vertices back towards the initial
 // mesh (1.57% against 0.74% without the fills).

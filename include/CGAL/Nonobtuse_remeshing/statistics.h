@@ -98,7 +98,7 @@ struct Deform_to_fit_statistics
   std::size_t guard_moves = 0;        ///< moves back towards the start positions, by the distance guard
   std::size_t border_notches_filled = 0;  ///< notches of the mesh's borders filled with faces (then fitted again)
   std::size_t border_vertices_added = 0;  ///< vertices the fills added (one per fill with two faces)
-  bool border_fills_undone = false;       ///< fills were made, but the fit ended farther with them: removed
+  bool border_fills_undone = false;       ///< fills were made, but the fit ended farther with them than without: removed
   double rms_distance = 0.;           ///< root mean square distance of the vertices to the input,
                                       ///< in % of the input's bounding-box diagonal (updated per phase)
   bool budget_exhausted = false;

@@ -513,15 +513,16 @@ private:
   {
     if(!options_.fill_border_notches || fill_passes_ == 4 || !input_.has_border()) return false;
     ++fill_passes_;
-    std::unique_ptr<Fit_state> before;
-    if(!before_fills_ && options_.distance_guard) before = std::make_unique<Fit_state>(*this, true);
     Border_notch_filler<TriangleMesh, VertexPointMap, Input> fill(mesh_, vpm_, input_, bounds_);
-    const auto fills = fill([this](vertex_descriptor v) { return bool(on_input_border_[get(index_, v)]); });
+    const auto fills = fill([this](vertex_descriptor v) { return bool(on_input_border_[get(index_, v)]); },
+                            [this] {  // the fit before the first fill, for keep_or_undo_the_fills()
+                              if(!before_fills_ && options_.distance_guard)
+                                before_fills_ = std::make_unique<Fit_state>(*this, true);
+                            });
     if(fills.notches == 0) {
       fill_passes_ = 4;
       return false;
     }
-    if(before) before_fills_ = std::move(before);
     stats_.border_notches_filled += fills.notches;
     stats_.border_vertices_added += fills.added.size();
     for(vertex_descriptor w : fills.added) {

@@ -20,6 +20,7 @@
 #include <CGAL/Nonobtuse_remeshing/angle_bounds.h>
 #include <CGAL/Nonobtuse_remeshing/internal/angle_predicates.h>
 #include <CGAL/Nonobtuse_remeshing/internal/epick_points.h>
+#include <CGAL/Nonobtuse_remeshing/internal/triangle_contact.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -32,6 +33,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <stdexcept>
 #include <vector>
 
@@ -80,10 +82,13 @@ public:
   // v satisfies `fits_input_border(v)` (its border cycle follows the
   // input's) and that allows it, at most one of any three consecutive
   // border vertices (a fill changes its neighbours' faces; the next pass
-  // sees them).
-  template <typename Fits>
-  Border_fills<vertex_descriptor, face_descriptor> operator()(const Fits& fits_input_border)
+  // sees them). `before_first_change()` is called once, before the pass
+  // changes the mesh, if it does.
+  template <typename Fits, typename Callback>
+  Border_fills<vertex_descriptor, face_descriptor> operator()(const Fits& fits_input_border,
+                                                              const Callback& before_first_change)
   {
+    before_change_ = before_first_change;
     Border_fills<vertex_descriptor, face_descriptor> fills;
     if(!input_.has_border()) return fills;
     std::vector<halfedge_descriptor> border;
@@ -163,7 +168,8 @@ private:
       if(halfedge(a, b, mesh_).second) return false;
       const New_face f{{a, v, b}, Triangle(pa, pv, pb)};
       if(!(distance_to_input(CGAL::midpoint(pa, pb)) < 0.5 * inside)) return false;
-      if(!acceptable(f, along_a, along_b, tree)) return false;
+      if(!certified(f.triangle) || !acceptable(f, along_a, along_b, tree)) return false;
+      before_change();
       add(f);
       return true;
     }
@@ -181,6 +187,7 @@ private:
       const Vector n2 = unit(f2.triangle.supporting_plane().orthogonal_vector());
       if(!(n1 * n2 >= 0.5)) continue;
       if(!acceptable(f1, along_a, n2, tree) || !acceptable(f2, n1, along_b, tree)) continue;
+      before_change();
       w = add_vertex(mesh_);
       put(vpm_, w, typename boost::property_traits<VertexPointMap>::value_type(pw.x(), pw.y(), pw.z()));
       add({{a, v, w}, f1.triangle});
@@ -195,13 +202,11 @@ private:
     return triangle_verdict(t[0], t[1], t[2], bounds_).within_bounds();
   }
 
-  // The new face certifies, turns by at most 60 degrees from the faces
-  // across its edges (0: (a, v), 1: (v, b), by their unit normals), and
-  // crosses no face of the mesh.
+  // The new face, certified already, turns by at most 60 degrees from the
+  // faces across its sides (a, v) and (v, b), or (w, v), by their unit
+  // normals, and crosses no face of the mesh.
   bool acceptable(const New_face& f, const Vector& across_first, const Vector& across_second, const Tree& tree) const
   {
-    if(!certified(f.triangle)) return false;
-    if(f.triangle.is_degenerate()) return false;
     const Vector n = unit(f.triangle.supporting_plane().orthogonal_vector());
     if(!(n * across_first >= 0.5) || !(n * across_second >= 0.5)) return false;
     std::vector<face_descriptor> near;
@@ -220,40 +225,24 @@ private:
   }
 
   // Whether the new face f and the face with `corners` (of the mesh, or
-  // added this pass) meet elsewhere than in the corners they share, exactly.
-  // A face that shares an edge with f is one across (a, v) or (v, b), whose
-  // turn `acceptable` bounds; one that shares a corner s must not be met by
-  // the other's side opposite s, nor be coplanar with f.
+  // added this pass) meet elsewhere than in what they share, exactly; the
+  // new vertex of a two-face fill, not yet in the mesh, is the null vertex
+  // in f's corners and shares nothing.
   bool crosses(const New_face& f, const std::array<vertex_descriptor, 3>& corners) const
   {
-    std::array<Point, 3> g;
-    int shared = 0, fs = -1, gs = -1;
-    for(int j = 0; j < 3; ++j) {
-      g[std::size_t(j)] = point(corners[std::size_t(j)]);
-      for(int i = 0; i < 3; ++i)
-        if(f.corners[std::size_t(i)] != GT::null_vertex() && f.corners[std::size_t(i)] == corners[std::size_t(j)]) {
-          ++shared;
-          fs = i;
-          gs = j;
-        }
-    }
-    const Triangle tg(g[0], g[1], g[2]);
-    if(tg.is_degenerate()) return false;
-    if(shared == 0) return CGAL::do_intersect(f.triangle, tg);
-    if(shared >= 2) return false;
-    const Point& other = g[std::size_t((gs + 1) % 3)];
-    const Point& last = g[std::size_t((gs + 2) % 3)];
-    if(CGAL::coplanar(f.triangle[0], f.triangle[1], f.triangle[2], other) &&
-       CGAL::coplanar(f.triangle[0], f.triangle[1], f.triangle[2], last))
-      return true;  // coplanar around the shared corner: refused rather than decided
-    const Epick::Segment_3 f_side(f.triangle[(fs + 1) % 3], f.triangle[(fs + 2) % 3]);
-    const Epick::Segment_3 g_side(other, last);
-    return CGAL::do_intersect(f_side, tg) || CGAL::do_intersect(g_side, f.triangle);
+    return meet_beyond_shared(f.corners, {f.triangle[0], f.triangle[1], f.triangle[2]}, corners,
+                              {point(corners[0]), point(corners[1]), point(corners[2])});
   }
 
   // Adds f along the border: its sides (a, v) and (v, b), or (w, v), are
   // consecutive border halfedges and its third side is new, which is all
   // that Euler::add_face needs; a refusal would be a bug here.
+  void before_change()
+  {
+    if(before_change_) before_change_();
+    before_change_ = nullptr;
+  }
+
   void add(New_face f)
   {
     f.face = Euler::add_face(f.corners, mesh_);
@@ -268,6 +257,7 @@ private:
   const Input& input_;
   const Angle_bounds bounds_;
   std::vector<New_face> added_;  // this pass's new faces
+  std::function<void()> before_change_;  // until the pass's first change
 };
 
 } // namespace internal

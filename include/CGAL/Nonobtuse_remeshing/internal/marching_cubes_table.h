@@ -14,6 +14,8 @@
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_MARCHING_CUBES_TABLE_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_MARCHING_CUBES_TABLE_H
 
+#include <CGAL/Nonobtuse_remeshing/internal/triangle_contact.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/assertions.h>
 #include <CGAL/intersections.h>
@@ -143,30 +145,8 @@ inline bool embedded(const std::vector<std::array<int, 3> >& triangles)
     for(std::size_t j = i + 1; j < triangles.size(); ++j) {
       const std::array<int, 3>& s = triangles[i];
       const std::array<int, 3>& t = triangles[j];
-      std::vector<int> shared, only_t;
-      for(int x : t) (std::count(s.begin(), s.end(), x) ? shared : only_t).push_back(x);
-      const K::Triangle_3 ts(point(s[0]), point(s[1]), point(s[2]));
-      const K::Triangle_3 tt(point(t[0]), point(t[1]), point(t[2]));
-      if(shared.empty()) {
-        if(CGAL::do_intersect(ts, tt)) return false;
-      } else if(shared.size() == 1) {
-        std::vector<int> only_s;
-        for(int x : s) if(x != shared[0]) only_s.push_back(x);
-        if(CGAL::do_intersect(ts, K::Segment_3(point(only_t[0]), point(only_t[1]))) ||
-           CGAL::do_intersect(tt, K::Segment_3(point(only_s[0]), point(only_s[1]))))
-          return false;
-      } else if(shared.size() == 2) {
-        // Folded onto each other: coplanar, and on the same side of the edge.
-        int apex_s = -1;
-        for(int x : s) if(x != shared[0] && x != shared[1]) apex_s = x;
-        if(CGAL::coplanar(point(shared[0]), point(shared[1]), point(apex_s), point(only_t[0])) &&
-           !CGAL::collinear(point(shared[0]), point(shared[1]), point(apex_s)) &&
-           CGAL::coplanar_orientation(point(shared[0]), point(shared[1]), point(apex_s), point(only_t[0])) ==
-               CGAL::POSITIVE)
-          return false;
-      } else {
-        return false;  // the same triangle twice
-      }
+      if(meet_beyond_shared(s, {point(s[0]), point(s[1]), point(s[2])}, t, {point(t[0]), point(t[1]), point(t[2])}))
+        return false;
     }
   return true;
 }
