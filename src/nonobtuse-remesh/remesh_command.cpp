@@ -247,6 +247,8 @@ int remesh_command(int argc, char** argv)
                           "started from")
     ("no-border-fill", "fit: do not fill the notches of the borders of an open input (faces added where the "
                        "border lies inside the input's, then fitted again)")
+    ("no-stuck-vertices", "fit: do not free the vertices left farthest from the input by moving each together "
+                          "with its one-ring")
     ("threads", po::value<int>(&decimation.threads)->default_value(0),
      "threads of the fit and of the levels' relaxation (0: one per core); the result is the same for any "
      "number")
@@ -376,6 +378,7 @@ int remesh_command(int argc, char** argv)
               NR::parameters::attract_features(vm.count("no-feature-attraction") == 0),
               NR::parameters::distance_guard(vm.count("no-distance-guard") == 0),
               NR::parameters::fill_border_notches(vm.count("no-border-fill") == 0),
+              NR::parameters::free_stuck_vertices(vm.count("no-stuck-vertices") == 0),
               NR::parameters::number_of_threads(decimation.threads),
               NR::parameters::remeshing_visitor(std::ref(progress)),
               NR::parameters::memory_budget(memory_limit * 1024. * 1024. * 1024.)));

@@ -94,6 +94,19 @@ Deform_to_fit_statistics deform_to_fit_with(TriangleMesh& mesh, VertexPointMap v
 /// the fit ends as without them (`border_fills_undone`; a `Surface_mesh`
 /// keeps the removed elements as garbage, as after any Euler operation).
 ///
+/// A vertex can stay far from the input because a corner of its one-ring
+/// sits at a bound: moving it would break that angle, and the neighbour
+/// that could make room gains nothing by moving. Once the queue converges,
+/// the vertices at least half as far from the input as the farthest (or
+/// whose attracted feature samples are) are freed (`free_stuck_vertices`):
+/// each is put on the input, or at its objective's minimum, all the way or
+/// part of it, while its neighbours solve their own QPs around its new
+/// position; the group is certified exactly and kept only when its farthest
+/// vertex comes 10% closer. At most four such passes, after the border
+/// fills, the queue resuming after each (`stuck_vertices_freed`). If the
+/// distance guard then cannot end the fit as close as its start, the fit
+/// ends as it stood before the first pass (`stuck_vertices_undone`).
+///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{alpha} weight of the distance term D, in [0, 1]; default 0.5
 ///     \cgalParamType{`double`} \cgalParamNEnd
@@ -122,6 +135,8 @@ Deform_to_fit_statistics deform_to_fit_with(TriangleMesh& mesh, VertexPointMap v
 ///   \cgalParamNBegin{distance_guard} moves back where the fit would end farther from the input than the mesh it started from (beyond the thesis); default true
 ///     \cgalParamType{`bool`} \cgalParamNEnd
 ///   \cgalParamNBegin{fill_border_notches} fills the notches of the borders with faces that bring them out to the input's border (beyond the thesis); default true
+///     \cgalParamType{`bool`} \cgalParamNEnd
+///   \cgalParamNBegin{free_stuck_vertices} moves the vertices left farthest from the input together with their one-rings (beyond the thesis); default true
 ///     \cgalParamType{`bool`} \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads} threads that move vertices sharing no edge at the same
 ///     time (oneTBB; without it, one); 0 for one per core; the result is the same, bit for bit,

@@ -46,6 +46,7 @@ namespace internal_np {
   X(attract_features_t, attract_features) /* input tips and creases hold */     \
   X(distance_guard_t, distance_guard)     /* the fit ends no farther */         \
   X(fill_border_notches_t, fill_border_notches) /* border staircases filled */  \
+  X(free_stuck_vertices_t, free_stuck_vertices) /* moved with their rings */    \
   X(fit_visitor_t, fit_visitor)           /* progress and cancellation */      \
   X(vertex_split_t, vertex_split)         /* splits after removal */        \
   X(target_vertices_t, target_vertices)   /* vertices of the result */       \

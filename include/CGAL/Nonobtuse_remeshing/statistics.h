@@ -99,6 +99,8 @@ struct Deform_to_fit_statistics
   std::size_t border_notches_filled = 0;  ///< notches of the mesh's borders filled with faces (then fitted again)
   std::size_t border_vertices_added = 0;  ///< vertices the fills added (one per fill with two faces)
   bool border_fills_undone = false;       ///< fills were made, but the fit ended farther with them than without: removed
+  std::size_t stuck_vertices_freed = 0;   ///< vertices far from the input moved closer together with their one-ring
+  bool stuck_vertices_undone = false;     ///< the guard could not end the fit as close as its start after that: undone
   double rms_distance = 0.;           ///< root mean square distance of the vertices to the input,
                                       ///< in % of the input's bounding-box diagonal (updated per phase)
   bool budget_exhausted = false;
@@ -234,6 +236,8 @@ void for_each_field(const Deform_to_fit_statistics& s, F&& f)
   f("border_notches_filled", s.border_notches_filled);
   f("border_vertices_added", s.border_vertices_added);
   f("border_fills_undone", s.border_fills_undone);
+  f("stuck_vertices_freed", s.stuck_vertices_freed);
+  f("stuck_vertices_undone", s.stuck_vertices_undone);
   f("rms_vertex_distance_percent", s.rms_distance);
   f("budget_exhausted", s.budget_exhausted);
   f("cancelled", s.cancelled);

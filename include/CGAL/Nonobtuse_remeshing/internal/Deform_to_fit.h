@@ -20,6 +20,7 @@
 #include <CGAL/Nonobtuse_remeshing/internal/fit_objective.h>
 #include <CGAL/Nonobtuse_remeshing/internal/parallel.h>
 #include <CGAL/Nonobtuse_remeshing/internal/small_qp.h>
+#include <CGAL/Nonobtuse_remeshing/internal/stuck_vertices.h>
 #include <CGAL/Nonobtuse_remeshing/internal/untangling.h>
 #include <CGAL/Nonobtuse_remeshing/parameters.h>
 #include <CGAL/Nonobtuse_remeshing/statistics.h>
@@ -60,6 +61,7 @@ struct Deform_to_fit_options
   bool attract_features = true;
   bool distance_guard = true;
   bool fill_border_notches = true;
+  bool free_stuck_vertices = true;
   int threads = 0;  // 0: one per core
 };
 
@@ -84,6 +86,8 @@ Deform_to_fit_options deform_to_fit_options(const NamedParameters& np, int& ring
   o.distance_guard = choose_parameter(get_parameter(np, internal_np::distance_guard), o.distance_guard);
   o.fill_border_notches =
       choose_parameter(get_parameter(np, internal_np::fill_border_notches), o.fill_border_notches);
+  o.free_stuck_vertices =
+      choose_parameter(get_parameter(np, internal_np::free_stuck_vertices), o.free_stuck_vertices);
   o.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), o.threads);
   rings = choose_parameter(get_parameter(np, internal_np::quadric_rings), 0);
   if(o.threads < 0) throw Bad_parameter("the number of threads must be at least 0 (0: one per core)");
@@ -186,7 +190,7 @@ private:
         evaluate_all();
       } else if(stale) {
         full_update();
-      } else if(!fill_border_notches()) {
+      } else if(!fill_border_notches() && !free_stuck_vertices()) {
         break;  // converged
       }
     }
@@ -194,6 +198,8 @@ private:
     if(!stats_.budget_exhausted && !stats_.cancelled) untangle();
     if(options_.distance_guard && !stats_.budget_exhausted && !stats_.cancelled) internal::guard_the_distance(*this);
     if(before_fills_ && !stats_.budget_exhausted && !stats_.cancelled) keep_or_undo_the_fills();
+    if(before_stuck_ && stats_.end_distance > stats_.start_distance && !stats_.budget_exhausted && !stats_.cancelled)
+      undo_the_freeing();
     update_rms_distance();
     stats_.seconds = seconds_since(start_);
   }
@@ -402,25 +408,27 @@ private:
   }
 
   // Solves vertex i's QP (equation 5.15, or 5.17 when smoothing) over F(v);
-  // returns false when F(v) is empty or cannot be built, or when no position
-  // at all improves the vertex's objective by more than the threshold (then
-  // no move is worth its QP: a cheap bound decides before F(v) is built).
+  // returns false when F(v) is empty or cannot be built, or, with
+  // `bound_gain`, when no position at all improves the vertex's objective by
+  // more than the threshold (then no move is worth its QP: a cheap bound
+  // decides before F(v) is built). `margin` (in units of the one-ring's size)
+  // shrinks F(v), so that an optimum on its boundary is not rounded out.
   // `cost`, when given, receives the objective at the vertex.
   bool solve(std::size_t i, Goal goal, Workspace& ws, Eigen::Vector3d& best, double& improvement,
-             double* cost = nullptr) const
+             double* cost = nullptr, bool bound_gain = true, double margin = 0.) const
   {
     const Local_frame f = frame(i);
     if(!(f.scale > 0.)) return false;
     Objective& o = ws.objective;
     objective(i, goal, o);
     o.local_form(f, ws.qp.G, ws.qp.a);
-    if(!(Objective::largest_decrease(f, ws.qp.G, ws.qp.a) > threshold_)) return false;
+    if(bound_gain && !(Objective::largest_decrease(f, ws.qp.G, ws.qp.a) > threshold_)) return false;
     ws.region.clear();
     if(!vertex_feasible_region(mesh_, points_, vertices_[i], options_.drum_subdivisions, f, ws.region))
       return false;
     ws.qp.normals.clear();
     ws.qp.offsets.clear();
-    for(const Half_space& h : ws.region) ws.qp.add_constraint(h.normal, h.offset);
+    for(const Half_space& h : ws.region) ws.qp.add_constraint(h.normal, h.offset + margin);
     ++ws.qp_solves;
     const Qp_result r = solve_small_qp_with_fallback(ws.qp, &ws.qp_fallbacks);
     if(r.status != Qp_status::optimal) {
@@ -882,6 +890,47 @@ private:
                                std::vector<std::pair<typename Fit::face_descriptor, typename Fit::face_descriptor> >& pairs,
                                bool strictly);
 
+  // Beyond the thesis (stuck_vertices.h): once the queue is converged (and
+  // the borders filled), at most four passes free the vertices farthest from
+  // the input together with their one-rings; the queue then resumes.
+  bool free_stuck_vertices()
+  {
+    if(!options_.free_stuck_vertices || stuck_passes_ == 4) return false;
+    if(stuck_passes_++ == 0 && options_.distance_guard) before_stuck_ = std::make_unique<Fit_state>(*this, false);
+    if(!internal::free_stuck_vertices(*this)) {
+      if(stuck_passes_ == 1) before_stuck_.reset();
+      stuck_passes_ = 4;
+      return false;
+    }
+    full_update();
+    return true;
+  }
+
+  // The distance guard promises a fit no farther from the input than its
+  // start. When it cannot keep that promise after stuck vertices were freed
+  // (measured once: rotor at 10,000 vertices, whose start mesh crosses
+  // itself, 1.477% against its start's 1.434%), the fit ends as it stood
+  // before the first pass instead, untangled and guarded. The passes come
+  // after the border fills, so the connectivity is the same; when the fills
+  // were undone, the fit is already back before the passes.
+  void undo_the_freeing()
+  {
+    if(stats_.border_fills_undone) return;
+    restore(*before_stuck_);
+    stats_.stuck_vertices_undone = true;
+    untangle();
+    if(!stats_.budget_exhausted && !stats_.cancelled) internal::guard_the_distance(*this);
+  }
+  template <typename Fit>
+  friend bool free_stuck_vertices(Fit& fit);
+  template <typename Fit>
+  friend bool free_stuck_vertex(Fit& fit, const std::vector<std::size_t>& group);
+  template <typename Fit>
+  friend double squared_gap(const Fit& fit, std::size_t j, typename Fit::face_descriptor& hint, std::size_t* sample);
+  template <typename Fit>
+  friend double farthest_of(const Fit& fit, const std::vector<std::size_t>& group,
+                            std::vector<typename Fit::face_descriptor>& hints);
+
   // Beyond the thesis: distance_guard.h.
   template <typename Fit>
   friend struct Start_point_map;
@@ -938,7 +987,9 @@ private:
   std::vector<bool> claimed_;                      // taken in the current round
   std::vector<std::vector<std::size_t> > classes_;  // colour classes, for the smoothing
   int fill_passes_ = 0;                             // passes of fill_border_notches() made
+  int stuck_passes_ = 0;                            // passes of free_stuck_vertices() made
   std::unique_ptr<Fit_state> before_fills_;         // the fit before the first fill
+  std::unique_ptr<Fit_state> before_stuck_;         // the fit before the first freeing of stuck vertices
   std::vector<std::array<std::size_t, 3> > filled_faces_;  // the fills' faces, by vertex index, in order
   Thread_pool pool_;
   std::vector<Workspace> workspaces_;  // one per worker
