@@ -105,7 +105,8 @@ Deform_to_fit_statistics deform_to_fit_with(TriangleMesh& mesh, VertexPointMap v
 /// vertex comes 10% closer. At most four such passes, after the border
 /// fills, the queue resuming after each (`stuck_vertices_freed`). If the
 /// distance guard then cannot end the fit as close as its start, the fit
-/// ends as it stood before the first pass (`stuck_vertices_undone`).
+/// from before the first pass is finished too and the closer one kept
+/// (`stuck_vertices_undone` when that is the one before the passes).
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{alpha} weight of the distance term D, in [0, 1]; default 0.5

@@ -660,9 +660,7 @@ private:
     if(!(stats_.end_distance > before_fills_->distance)) return;
     const Fit_state with(*this, false);
     remove_fills(before_fills_->points.size());
-    restore(*before_fills_);
-    untangle();
-    if(!stats_.budget_exhausted && !stats_.cancelled) internal::guard_the_distance(*this);
+    end_from(*before_fills_);
     if(stats_.end_distance <= with.stats.end_distance || stats_.budget_exhausted || stats_.cancelled) {
       stats_.border_fills_undone = true;
       return;
@@ -909,15 +907,27 @@ private:
   // The distance guard promises a fit no farther from the input than its
   // start. When it cannot keep that promise after stuck vertices were freed
   // (measured once: rotor at 10,000 vertices, whose start mesh crosses
-  // itself, 1.477% against its start's 1.434%), the fit ends as it stood
-  // before the first pass instead, untangled and guarded. The passes come
-  // after the border fills, so the connectivity is the same; when the fills
-  // were undone, the fit is already back before the passes.
+  // itself, 1.477% against its start's 1.434%), the fit from before the
+  // first pass is untangled and guarded too, and the closer of the two, as
+  // the guard measures them, is kept. The passes come after the border
+  // fills, so the connectivity is the same; when the fills were undone, the
+  // fit is already back before the passes.
   void undo_the_freeing()
   {
     if(stats_.border_fills_undone) return;
-    restore(*before_stuck_);
-    stats_.stuck_vertices_undone = true;
+    const Fit_state with(*this, false);
+    end_from(*before_stuck_);
+    if(stats_.end_distance > with.stats.end_distance && !stats_.budget_exhausted && !stats_.cancelled)
+      restore(with);
+    else
+      stats_.stuck_vertices_undone = true;
+  }
+
+  // Back to state `s`, then the untangling and the distance guard, as at the
+  // end of the optimization.
+  void end_from(const Fit_state& s)
+  {
+    restore(s);
     untangle();
     if(!stats_.budget_exhausted && !stats_.cancelled) internal::guard_the_distance(*this);
   }
