@@ -52,6 +52,47 @@ NR::Quality_report report(const Mesh& mesh, const Mesh& input)
   return NR::quality_report(mesh, &input, NR::parameters::maximum_self_intersections(std::size_t(50)));
 }
 
+// The fit of the pipeline's start mesh at `resolution` with the border
+// fills and without them, and what the fills must give: a certified file
+// with the start's topology, no self-intersection, the input nearer to it
+// than to the file without fills (by 20% at least), a fit that ends no
+// farther than its start, and a vertex count that adds up.
+struct Fits_with_and_without_fills
+{
+  Fits_with_and_without_fills(const std::string& name, int resolution)
+  {
+    const Mesh input = nonobtuse_test::load(name);
+    const Mesh initial = fit_start(input, resolution);
+    const NR::Quality_report start = report(initial, input);
+    Mesh unfilled = initial, filled = initial;
+    without_fill = NR::deform_to_fit(unfilled, input, NR::parameters::fill_border_notches(false));
+    with_fill = NR::deform_to_fit(filled, input);
+    EXPECT_EQ(without_fill.border_notches_filled + without_fill.border_corners_filled, 0u);
+    EXPECT_FALSE(with_fill.border_fills_undone);
+    EXPECT_EQ(num_vertices(filled), num_vertices(initial) + with_fill.border_vertices_added);
+    EXPECT_EQ(with_fill.vertices, num_vertices(filled));
+    const NR::Quality_report a = report(nonobtuse_test::written_and_reread(unfilled, "unfilled_" + name), input);
+    const NR::Quality_report b = report(nonobtuse_test::written_and_reread(filled, "filled_" + name), input);
+    std::cout << "[ measured ] " << name << " N=" << resolution << ": " << with_fill.border_notches_filled
+              << " notches and " << with_fill.border_corners_filled << " corners filled, "
+              << with_fill.border_vertices_added << " vertices added; input to mesh "
+              << a.distance->hausdorff_from_reference << "% -> " << b.distance->hausdorff_from_reference
+              << "%, symmetric " << a.distance->hausdorff_symmetric << "% -> " << b.distance->hausdorff_symmetric
+              << "%, fit " << without_fill.seconds << " s -> " << with_fill.seconds << " s\n";
+    EXPECT_TRUE(b.certified);
+    EXPECT_LT(b.distance->hausdorff_from_reference, 0.8 * a.distance->hausdorff_from_reference);
+    EXPECT_LT(b.distance->hausdorff_symmetric, a.distance->hausdorff_symmetric);
+    EXPECT_LE(with_fill.end_distance, with_fill.start_distance);
+    EXPECT_EQ(b.border_cycles, start.border_cycles);
+    EXPECT_EQ(b.connected_components, start.connected_components);
+    EXPECT_EQ(b.euler_characteristic, start.euler_characteristic);
+    EXPECT_EQ(b.non_manifold_vertices, 0u);
+    EXPECT_EQ(b.self_intersections, 0u);
+    EXPECT_EQ(with_fill.intersecting_pairs, 0u);
+  }
+  NR::Deform_to_fit_statistics without_fill, with_fill;
+};
+
 // Certifies the whole mesh every `period` calls: the mesh is certified at
 // every moment of the fit, not only at its end.
 struct Certifying_visitor
@@ -123,37 +164,23 @@ TEST(DeformToFit, FitsTheSampleMeshes)
 // none crosses another.
 TEST(DeformToFit, FillsTheNotchesOfTheBorder)
 {
-  const Mesh input = nonobtuse_test::load("mesh_with_border.off");
-  const Mesh initial = fit_start(input, 60);
-  const NR::Quality_report start = report(initial, input);
-  Mesh unfilled = initial, filled = initial;
-  const NR::Deform_to_fit_statistics without_fill =
-      NR::deform_to_fit(unfilled, input, NR::parameters::fill_border_notches(false));
-  const NR::Deform_to_fit_statistics with_fill = NR::deform_to_fit(filled, input);
-  EXPECT_EQ(without_fill.border_notches_filled, 0u);
-  EXPECT_EQ(without_fill.border_vertices_added, 0u);
-  ASSERT_GT(with_fill.border_notches_filled, 0u);
-  EXPECT_FALSE(with_fill.border_fills_undone);
-  EXPECT_LE(with_fill.border_vertices_added, with_fill.border_notches_filled);
-  EXPECT_EQ(num_vertices(filled), num_vertices(initial) + with_fill.border_vertices_added);
-  EXPECT_EQ(with_fill.vertices, num_vertices(filled));
-  const NR::Quality_report a = report(nonobtuse_test::written_and_reread(unfilled, "unfilled.off"), input);
-  const NR::Quality_report b = report(nonobtuse_test::written_and_reread(filled, "filled.off"), input);
-  std::cout << "[ measured ] mesh_with_border N=60: " << with_fill.border_notches_filled << " notches filled, "
-            << with_fill.border_vertices_added << " vertices added; input to mesh "
-            << a.distance->hausdorff_from_reference << "% -> " << b.distance->hausdorff_from_reference
-            << "%, symmetric " << a.distance->hausdorff_symmetric << "% -> " << b.distance->hausdorff_symmetric
-            << "%, fit " << without_fill.seconds << " s -> " << with_fill.seconds << " s\n";
-  EXPECT_TRUE(b.certified);
-  EXPECT_LT(b.distance->hausdorff_from_reference, 0.8 * a.distance->hausdorff_from_reference);
-  EXPECT_LT(b.distance->hausdorff_symmetric, a.distance->hausdorff_symmetric);
-  EXPECT_LE(with_fill.end_distance, with_fill.start_distance);
-  EXPECT_EQ(b.border_cycles, start.border_cycles);
-  EXPECT_EQ(b.connected_components, start.connected_components);
-  EXPECT_EQ(b.euler_characteristic, start.euler_characteristic);
-  EXPECT_EQ(b.non_manifold_vertices, 0u);
-  EXPECT_EQ(b.self_intersections, 0u);
-  EXPECT_EQ(with_fill.intersecting_pairs, 0u);
+  const Fits_with_and_without_fills fits("mesh_with_border.off", 60);
+  EXPECT_EQ(fits.without_fill.border_vertices_added, 0u);
+  ASSERT_GT(fits.with_fill.border_notches_filled, 0u);
+  EXPECT_LE(fits.with_fill.border_vertices_added,
+            fits.with_fill.border_notches_filled + fits.with_fill.border_corners_filled);
+}
+
+// A corner of the input's border that the mesh's border cuts off gets an
+// ear, a face on the mesh's border edge nearest the corner with a new
+// vertex at the corner: cylinder.off is a half cylinder, its rim a
+// rectangle with four right-angled corners, which the vertices near them,
+// with three faces or more, cannot close.
+TEST(DeformToFit, FillsTheCornersOfTheBorder)
+{
+  const Fits_with_and_without_fills fits("cylinder.off", 50);
+  EXPECT_EQ(fits.without_fill.border_corners_filled, 0u);
+  ASSERT_GT(fits.with_fill.border_corners_filled, 0u);
 }
 
 // Fills with which the fit ends farther from the input (as the distance

@@ -97,7 +97,8 @@ struct Deform_to_fit_statistics
                                       ///< the guard's moves back could not bring it there
   std::size_t guard_moves = 0;        ///< moves back towards the start positions, by the distance guard
   std::size_t border_notches_filled = 0;  ///< notches of the mesh's borders filled with faces (then fitted again)
-  std::size_t border_vertices_added = 0;  ///< vertices the fills added (one per fill with two faces)
+  std::size_t border_corners_filled = 0;  ///< corners of the input's border the mesh's cut off, filled with an ear
+  std::size_t border_vertices_added = 0;  ///< vertices the fills added (one per notch fill with two faces, one per ear)
   bool border_fills_undone = false;       ///< fills were made, but the fit ended farther with them than without: removed
   std::size_t stuck_vertices_freed = 0;   ///< vertices far from the input moved closer together with their one-ring
   bool stuck_vertices_undone = false;     ///< the guard could not end the fit as close as its start after that: undone
@@ -234,6 +235,7 @@ void for_each_field(const Deform_to_fit_statistics& s, F&& f)
   f("end_distance_percent", s.end_distance);
   f("guard_moves", s.guard_moves);
   f("border_notches_filled", s.border_notches_filled);
+  f("border_corners_filled", s.border_corners_filled);
   f("border_vertices_added", s.border_vertices_added);
   f("border_fills_undone", s.border_fills_undone);
   f("stuck_vertices_freed", s.stuck_vertices_freed);

@@ -527,11 +527,12 @@ private:
                               if(!before_fills_ && options_.distance_guard)
                                 before_fills_ = std::make_unique<Fit_state>(*this, true);
                             });
-    if(fills.notches == 0) {
+    if(fills.notches + fills.corners == 0) {
       fill_passes_ = 4;
       return false;
     }
     stats_.border_notches_filled += fills.notches;
+    stats_.border_corners_filled += fills.corners;
     stats_.border_vertices_added += fills.added.size();
     for(vertex_descriptor w : fills.added) {
       put(index_, w, vertices_.size());

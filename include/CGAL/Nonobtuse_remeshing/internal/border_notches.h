@@ -13,6 +13,12 @@
 // the bounds and crosses no face of the mesh; it adds faces along one border
 // cycle, so it keeps the Euler characteristic, the border cycles and the
 // components. The fit then pulls the new border towards the input's.
+//
+// A corner of the input's border (where it turns by 30 degrees or more)
+// that the mesh's border cuts off is filled the same way, with an ear: the
+// face (a, b, w) on the mesh's border edge (a, b) nearest the corner, its
+// new vertex w at the corner. The fit cannot make the corner either: the
+// vertices near it have too many faces to close an angle that small.
 
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_BORDER_NOTCHES_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_BORDER_NOTCHES_H
@@ -23,6 +29,7 @@
 #include <CGAL/Nonobtuse_remeshing/internal/triangle_contact.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -46,6 +53,7 @@ template <typename vertex_descriptor, typename face_descriptor>
 struct Border_fills
 {
   std::size_t notches = 0;                 // notches filled
+  std::size_t corners = 0;                 // corners filled with an ear
   std::vector<vertex_descriptor> added;    // the new vertices
   std::vector<vertex_descriptor> touched;  // the vertices of the new faces
   std::vector<face_descriptor> faces;      // the new faces, in the order added
@@ -57,6 +65,9 @@ class Border_notch_filler
   using Point = Epick::Point_3;
   using Vector = Epick::Vector_3;
   using Triangle = Epick::Triangle_3;
+  using Segment = Epick::Segment_3;
+  using Segment_tree =
+      AABB_tree<AABB_traits<Epick, AABB_segment_primitive<Epick, typename std::vector<Segment>::const_iterator> > >;
   using GT = boost::graph_traits<TriangleMesh>;
   using vertex_descriptor = typename GT::vertex_descriptor;
   using halfedge_descriptor = typename GT::halfedge_descriptor;
@@ -117,6 +128,25 @@ public:
       if(w != none) fills.added.push_back(w);
       ++fills.notches;
     }
+    // then the corners, each at the mesh's border edge nearest it (as the
+    // border was before this pass)
+    std::vector<Segment> segments;
+    for(halfedge_descriptor h : border) segments.emplace_back(point(source(h, mesh_)), point(target(h, mesh_)));
+    const Segment_tree nearest(segments.begin(), segments.end());
+    for(const Point& corner : input_corners()) {
+      const halfedge_descriptor h = border[nearest.closest_point_and_primitive(corner).second - segments.begin()];
+      const vertex_descriptor a = source(h, mesh_), b = target(h, mesh_);
+      if(!is_border(h, mesh_) || get(touched, a) || get(touched, b) || !fits_input_border(a) || !fits_input_border(b))
+        continue;
+      vertex_descriptor w = GT::null_vertex();
+      if(!ear(h, corner, tree, w)) continue;
+      for(vertex_descriptor x : {a, b, w}) {
+        put(touched, x, true);
+        fills.touched.push_back(x);
+      }
+      fills.added.push_back(w);
+      ++fills.corners;
+    }
     for(const New_face& f : added_) fills.faces.push_back(f.face);
     return fills;
   }
@@ -160,41 +190,110 @@ private:
       if(!is_border(h, mesh_))
         angles += CGAL::approximate_angle(point(source(h, mesh_)), pv, point(target(next(h, mesh_), mesh_)));
     if(!(angles > 200.)) return false;  // not a notch: a fill would fold over the mesh
-    const Vector along_a = face_normal(opposite(h1, mesh_)), along_b = face_normal(opposite(h2, mesh_));
     const double opening = CGAL::approximate_angle(pa, pv, pb);
-    if(opening <= bounds_.max_degrees()) {
-      // one face: a and b must not be joined already (the border cycle
-      // would close, or an edge would double)
-      if(halfedge(a, b, mesh_).second) return false;
+    // one face where its angle at v is not obtuse; a and b must not be
+    // joined already (the border cycle would close, or an edge would double)
+    if(opening <= bounds_.max_degrees() && !halfedge(a, b, mesh_).second &&
+       distance_to_input(CGAL::midpoint(pa, pb)) < 0.5 * inside) {
       const New_face f{{a, v, b}, Triangle(pa, pv, pb)};
-      if(!(distance_to_input(CGAL::midpoint(pa, pb)) < 0.5 * inside)) return false;
-      if(!certified(f.triangle) || !acceptable(f, along_a, along_b, tree)) return false;
-      before_change();
-      add(f);
-      return true;
+      if(certified(f.triangle) &&
+         acceptable(f, face_normal(opposite(h1, mesh_)), face_normal(opposite(h2, mesh_)), tree)) {
+        before_change();
+        add(f);
+        return true;
+      }
     }
     if(opening >= 170.) return false;
-    // two faces: w on the bisector of the opening, about an edge from v
-    const Vector bisector = unit(unit(pa - pv) + unit(pb - pv));
-    for(double scale : {1., 0.9, 1.1, 0.8, 1.25, 0.7, 1.4}) {
-      const Point pw = pv + scale * length * bisector;
-      if(!(distance_to_input_border(pw) < inside) || !(distance_to_input(pw) < 0.5 * inside)) continue;
-      // the new vertex's faces, as they will be; tested before w exists
-      const vertex_descriptor none = GT::null_vertex();
-      const New_face f1{{a, v, none}, Triangle(pa, pv, pw)}, f2{{none, v, b}, Triangle(pw, pv, pb)};
-      if(!certified(f1.triangle) || !certified(f2.triangle)) continue;
-      const Vector n1 = unit(f1.triangle.supporting_plane().orthogonal_vector());
-      const Vector n2 = unit(f2.triangle.supporting_plane().orthogonal_vector());
-      if(!(n1 * n2 >= 0.5)) continue;
-      if(!acceptable(f1, along_a, n2, tree) || !acceptable(f2, n1, along_b, tree)) continue;
+    // two faces: w on the bisector of the opening, about an edge from v, as
+    // the fills were first made; else nearer v (a shallow notch, whose w
+    // would lie too far beyond the input's border) or off the bisector (a
+    // notch whose sides differ in length)
+    const Vector to_a = unit(pa - pv), to_b = unit(pb - pv);
+    for(double turn : {0.5, 0.45, 0.55, 0.4, 0.6})
+      for(double scale : {1., 0.9, 1.1, 0.8, 1.25, 0.7, 1.4, 0.6, 0.5})
+        if(two_faces(h1, h2, pv + scale * length * unit((1. - turn) * to_a + turn * to_b), inside, tree, w))
+          return true;
+    return false;
+  }
+
+  // The fill of the notch between h1 = (a, v) and h2 = (v, b) with the two
+  // faces (a, v, w) and (w, v, b), w at `pw`, if they are acceptable; the
+  // new vertex is written to `w`.
+  bool two_faces(halfedge_descriptor h1, halfedge_descriptor h2, const Point& pw, double inside, const Tree& tree,
+                 vertex_descriptor& w)
+  {
+    const vertex_descriptor a = source(h1, mesh_), v = target(h1, mesh_), b = target(h2, mesh_);
+    const Point pa = point(a), pv = point(v), pb = point(b);
+    if(!(distance_to_input_border(pw) < inside) || !(distance_to_input(pw) < 0.5 * inside)) return false;
+    // the new vertex's faces, as they will be; tested before w exists
+    const vertex_descriptor none = GT::null_vertex();
+    const New_face f1{{a, v, none}, Triangle(pa, pv, pw)}, f2{{none, v, b}, Triangle(pw, pv, pb)};
+    if(!certified(f1.triangle) || !certified(f2.triangle)) return false;
+    const Vector n1 = unit(f1.triangle.supporting_plane().orthogonal_vector());
+    const Vector n2 = unit(f2.triangle.supporting_plane().orthogonal_vector());
+    if(!(n1 * n2 >= 0.5)) return false;
+    if(!acceptable(f1, face_normal(opposite(h1, mesh_)), n2, tree) ||
+       !acceptable(f2, n1, face_normal(opposite(h2, mesh_)), tree))
+      return false;
+    before_change();
+    w = add_new_vertex(pw);
+    add({{a, v, w}, f1.triangle});
+    add({{w, v, b}, f2.triangle});
+    return true;
+  }
+
+  // The ear (a, b, w) on the border halfedge h = (a, b), w at the input's
+  // border corner `corner` or pulled towards the edge, if it is acceptable
+  // (as a fill's face: certified, turning by at most 60 degrees from the
+  // face across (a, b), crossing no face); the new vertex is written to `w`.
+  // Only where the edge cuts the corner off by a quarter of its length or
+  // more, and at most two lengths.
+  bool ear(halfedge_descriptor h, const Point& corner, const Tree& tree, vertex_descriptor& w)
+  {
+    const vertex_descriptor a = source(h, mesh_), b = target(h, mesh_);
+    const Point pa = point(a), pb = point(b);
+    const double length = std::sqrt(CGAL::squared_distance(pa, pb));
+    const double cut = std::sqrt(CGAL::squared_distance(corner, Segment(pa, pb)));
+    if(!(cut > 0.25 * length) || cut > 2. * length) return false;
+    const Vector across = face_normal(opposite(h, mesh_));
+    const Point middle = CGAL::midpoint(pa, pb);
+    for(double scale : {1., 0.85, 0.7}) {
+      const Point pw = middle + scale * (corner - middle);
+      const New_face f{{a, b, GT::null_vertex()}, Triangle(pa, pb, pw)};
+      if(!certified(f.triangle) || !acceptable(f, across, across, tree)) continue;
       before_change();
-      w = add_vertex(mesh_);
-      put(vpm_, w, typename boost::property_traits<VertexPointMap>::value_type(pw.x(), pw.y(), pw.z()));
-      add({{a, v, w}, f1.triangle});
-      add({{w, v, b}, f2.triangle});
+      w = add_new_vertex(pw);
+      add({{a, b, w}, f.triangle});
       return true;
     }
     return false;
+  }
+
+  // The input's convex border corners: its border vertices whose faces'
+  // angles sum to at most 150 degrees, where its border turns by 30
+  // degrees or more towards the surface.
+  std::vector<Point> input_corners() const
+  {
+    const auto& input = input_.mesh();
+    std::vector<Point> corners;
+    for(auto h : halfedges(input)) {
+      if(!is_border(h, input)) continue;
+      const auto c = target(h, input);
+      double angles = 0.;
+      for(auto g : halfedges_around_target(c, input))
+        if(!is_border(g, input))
+          angles += CGAL::approximate_angle(input_.point(source(g, input)), input_.point(c),
+                                            input_.point(target(next(g, input), input)));
+      if(angles <= 150.) corners.push_back(input_.point(c));
+    }
+    return corners;
+  }
+
+  vertex_descriptor add_new_vertex(const Point& p)
+  {
+    const vertex_descriptor w = add_vertex(mesh_);
+    put(vpm_, w, typename boost::property_traits<VertexPointMap>::value_type(p.x(), p.y(), p.z()));
+    return w;
   }
 
   bool certified(const Triangle& t) const
