@@ -935,7 +935,8 @@ private:
   template <typename Fit>
   friend bool free_stuck_vertices(Fit& fit);
   template <typename Fit>
-  friend bool free_stuck_vertex(Fit& fit, const std::vector<std::size_t>& group);
+  friend std::size_t free_stuck_vertex(Fit& fit, const std::vector<std::size_t>& group,
+                                       typename Fit::Workspace& ws);
   template <typename Fit>
   friend double squared_gap(const Fit& fit, std::size_t j, typename Fit::face_descriptor& hint, std::size_t* sample);
   template <typename Fit>

@@ -79,17 +79,19 @@ double farthest_of(const Fit& fit, const std::vector<std::size_t>& group,
   return std::sqrt(farthest);
 }
 
-// Tries to free vertex group[0] with the rest of `group`, its one-ring;
-// returns whether it did.
+// Tries to free vertex group[0] with the rest of `group`, its one-ring, in
+// the worker's workspace `ws`; returns how many of the group's vertices it
+// moved (0: not freed, the group as it was). It writes the group's points
+// and closest triangles only, and reads no farther than the one-rings of
+// the group's vertices.
 template <typename Fit>
-bool free_stuck_vertex(Fit& fit, const std::vector<std::size_t>& group)
+std::size_t free_stuck_vertex(Fit& fit, const std::vector<std::size_t>& group, typename Fit::Workspace& ws)
 {
   using Point = typename Fit::Point;
   using face_descriptor = typename Fit::face_descriptor;
   const std::size_t i = group[0];
-  auto& ws = fit.workspaces_[0];
   const Local_frame f = fit.frame(i);
-  if(!(f.scale > 0.)) return false;
+  if(!(f.scale > 0.)) return 0;
 
   // where the vertex should go: the point of the input (or the feature
   // sample) its gap is measured to, then the minimum of its objective
@@ -137,26 +139,33 @@ bool free_stuck_vertex(Fit& fit, const std::vector<std::size_t>& group)
         certified = fit.certified_at(group[j], fit.point(fit.vertices_[group[j]]));
       hints = hints_before;
       if(certified && farthest_of(fit, group, hints) < 0.9 * farthest_before) {
+        std::size_t moved = 0;
         for(std::size_t j = 0; j < group.size(); ++j) {
           fit.hint_[group[j]] = hints[j];
-          if(fit.point(fit.vertices_[group[j]]) != before[j]) {
-            ++fit.stats_.moves;
-            ++fit.moved_since_update_;
-          }
+          if(fit.point(fit.vertices_[group[j]]) != before[j]) ++moved;
         }
         ws.infeasible_regions = infeasible;
-        return true;
+        return moved;
       }
       for(std::size_t j = 0; j < group.size(); ++j) put_point(fit.vpm_, fit.vertices_[group[j]], before[j]);
     }
   ws.infeasible_regions = infeasible;
-  return false;
+  return 0;
 }
 
 // One pass over the vertices whose gap is at least half the largest,
 // largest first, each with a one-ring that no group freed before in the
 // pass has touched. Returns whether some were freed; their groups and the
 // rings around are then dirty.
+//
+// The candidates are tried in rounds, in parallel, with the outcome of
+// trying them one after the other in their order: a round takes them in
+// order, at most Fit::round_size, each at least four edges from every
+// candidate before it that is not yet tried (a try writes its group, within
+// one edge of the candidate, and reads within two, so it cannot see nor be
+// seen by those); the others wait for the next round, in their order. The
+// outcomes are recorded in the round's order, so the result does not depend
+// on the number of threads.
 template <typename Fit>
 bool free_stuck_vertices(Fit& fit)
 {
@@ -172,24 +181,60 @@ bool free_stuck_vertices(Fit& fit)
     if(gap[i] > 0. && gap[i] >= 0.25 * largest) candidates.push_back(i);
   std::sort(candidates.begin(), candidates.end(),
             [&](std::size_t a, std::size_t b) { return gap[a] != gap[b] ? gap[a] > gap[b] : a < b; });
-  std::vector<bool> touched(n, false);
-  std::size_t freed = 0;
-  for(std::size_t i : candidates) {
-    if(fit.stopped()) break;
-    std::vector<std::size_t> group{i};
-    for(auto w : vertices_around_target(halfedge(fit.vertices_[i], fit.mesh_), fit.mesh_))
-      group.push_back(get(fit.index_, w));
-    if(std::any_of(group.begin(), group.end(), [&](std::size_t j) { return touched[j]; })) continue;
-    if(fit.options_.max_moves - fit.stats_.moves < group.size()) break;  // the move budget holds exactly
-    if(!free_stuck_vertex(fit, group)) continue;
-    ++freed;
-    for(std::size_t j : group) {
-      touched[j] = true;
-      fit.dirty_[j] = true;
-      for(auto w : vertices_around_target(halfedge(fit.vertices_[j], fit.mesh_), fit.mesh_))
-        fit.dirty_[get(fit.index_, w)] = true;
+  auto ring = [&](std::size_t j) { return vertices_around_target(halfedge(fit.vertices_[j], fit.mesh_), fit.mesh_); };
+  std::vector<bool> touched(n, false), claimed(n, false);
+  std::vector<std::vector<std::size_t> > groups;
+  std::vector<std::size_t> moved, claims, waiting, still_waiting;
+  std::size_t next = 0, freed = 0;  // candidates[next, end) not yet seen
+  while((!waiting.empty() || next < candidates.size()) && !fit.stopped()) {
+    groups.clear();
+    still_waiting.clear();
+    std::size_t budget = fit.options_.max_moves - fit.stats_.moves;  // the move budget holds exactly
+    // those waiting from the round before come first: they are earlier
+    // in the order than those not yet seen
+    for(std::size_t k = 0; groups.size() < Fit::round_size && (k < waiting.size() || next < candidates.size()); ++k) {
+      const std::size_t i = k < waiting.size() ? waiting[k] : candidates[next++];
+      std::vector<std::size_t> group{i};
+      for(auto w : ring(i)) group.push_back(get(fit.index_, w));
+      if(std::any_of(group.begin(), group.end(), [&](std::size_t j) { return touched[j]; })) continue;
+      const bool wait = std::any_of(group.begin(), group.end(), [&](std::size_t j) { return claimed[j]; }) ||
+                        budget < group.size();
+      for(std::size_t j : group)  // the group's two-ring, which those after it must not reach
+        for(auto w : ring(j))
+          if(!claimed[get(fit.index_, w)]) {
+            claimed[get(fit.index_, w)] = true;
+            claims.push_back(get(fit.index_, w));
+          }
+      if(wait) {
+        still_waiting.push_back(i);
+        continue;
+      }
+      budget -= group.size();
+      groups.push_back(std::move(group));
+      if(groups.size() == Fit::round_size)  // the rest of those waiting wait on
+        for(++k; k < waiting.size(); ++k) still_waiting.push_back(waiting[k]);
+    }
+    waiting.swap(still_waiting);
+    if(groups.empty()) break;  // the rest wait for a budget that is spent
+    for(std::size_t j : claims) claimed[j] = false;
+    claims.clear();
+    moved.assign(groups.size(), 0);
+    fit.pool_.for_each(groups.size(), [&](std::size_t g, int worker) {
+      moved[g] = free_stuck_vertex(fit, groups[g], fit.workspaces_[worker]);
+    });
+    for(std::size_t g = 0; g < groups.size(); ++g) {
+      if(moved[g] == 0) continue;
+      ++freed;
+      fit.stats_.moves += moved[g];
+      fit.moved_since_update_ += moved[g];
+      for(std::size_t j : groups[g]) {
+        touched[j] = true;
+        fit.dirty_[j] = true;
+        for(auto w : ring(j)) fit.dirty_[get(fit.index_, w)] = true;
+      }
     }
   }
+  fit.collect_counters();
   fit.stats_.stuck_vertices_freed += freed;
   return freed > 0;
 }
