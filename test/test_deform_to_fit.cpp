@@ -17,6 +17,7 @@
 
 #include "test_support.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <iostream>
@@ -224,12 +225,18 @@ TEST(DeformToFit, FreesStuckVertices)
 {
   const Mesh input = nonobtuse_test::load("sphere.off");
   const Mesh initial = fit_start(input, 50);
-  Mesh stuck = initial, freed = initial;
+  Mesh stuck = initial, freed = initial, freed_on_one = initial;
   const NR::Deform_to_fit_statistics without =
       NR::deform_to_fit(stuck, input, NR::parameters::free_stuck_vertices(false));
-  const NR::Deform_to_fit_statistics with = NR::deform_to_fit(freed, input);
+  const NR::Deform_to_fit_statistics with = NR::deform_to_fit(freed, input, NR::parameters::number_of_threads(2));
   EXPECT_EQ(without.stuck_vertices_freed, 0u);
   ASSERT_GT(with.stuck_vertices_freed, 0u);
+  // the passes' parallel rounds: the same points, bit for bit, on one thread
+  const NR::Deform_to_fit_statistics on_one =
+      NR::deform_to_fit(freed_on_one, input, NR::parameters::number_of_threads(1));
+  EXPECT_EQ(on_one.stuck_vertices_freed, with.stuck_vertices_freed);
+  EXPECT_TRUE(std::equal(freed.points().begin(), freed.points().end(), freed_on_one.points().begin(),
+                         freed_on_one.points().end()));
   const NR::Quality_report a = report(nonobtuse_test::written_and_reread(stuck, "stuck.off"), input);
   const NR::Quality_report b = report(nonobtuse_test::written_and_reread(freed, "freed.off"), input);
   std::cout << "[ measured ] sphere N=50: " << with.stuck_vertices_freed << " stuck vertices freed; mesh to input "
