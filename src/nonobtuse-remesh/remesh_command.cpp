@@ -245,8 +245,9 @@ int remesh_command(int argc, char** argv)
     ("no-feature-attraction", "fit: no attraction of the input's vertices and sharp edges")
     ("no-distance-guard", "fit: do not move back where the fit ended farther from the input than the mesh it "
                           "started from")
-    ("no-border-fill", "fit: do not fill the notches of the borders of an open input (faces added where the "
-                       "border lies inside the input's, then fitted again)")
+    ("no-border-fill", "fit: do not fill the notches of the borders of an open input, nor the corners of the "
+                       "input's border they cut off (faces added where the border lies inside the input's, then "
+                       "fitted again)")
     ("no-stuck-vertices", "fit: do not free the vertices left farthest from the input by moving each together "
                           "with its one-ring")
     ("threads", po::value<int>(&decimation.threads)->default_value(0),

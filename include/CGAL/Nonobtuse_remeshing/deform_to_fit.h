@@ -86,7 +86,10 @@ Deform_to_fit_statistics deform_to_fit_with(TriangleMesh& mesh, VertexPointMap v
 /// gets the face joining its two border neighbours, or two faces around a
 /// new border vertex where that face would be obtuse, each new face
 /// certified exactly and crossing no face of the mesh, only towards the
-/// input's border and over the input; the fit then goes on, at most four
+/// input's border and over the input; a corner of the input's border (its
+/// faces' angles summing to at most 150 degrees) that the mesh's border cuts
+/// off gets an ear, a face on the nearest border edge with a new vertex at
+/// the corner; the fit then goes on, at most four
 /// such passes. The Euler characteristic, the border cycles and the
 /// components stay; `mesh` gains the new vertices and faces. When the fit
 /// ends farther from the input with the fills than it would have without
@@ -135,7 +138,7 @@ Deform_to_fit_statistics deform_to_fit_with(TriangleMesh& mesh, VertexPointMap v
 ///     \cgalParamType{`bool`} \cgalParamNEnd
 ///   \cgalParamNBegin{distance_guard} moves back where the fit would end farther from the input than the mesh it started from (beyond the thesis); default true
 ///     \cgalParamType{`bool`} \cgalParamNEnd
-///   \cgalParamNBegin{fill_border_notches} fills the notches of the borders with faces that bring them out to the input's border (beyond the thesis); default true
+///   \cgalParamNBegin{fill_border_notches} fills the notches of the borders, and the corners of the input's border they cut off, with faces that bring them out to the input's border (beyond the thesis); default true
 ///     \cgalParamType{`bool`} \cgalParamNEnd
 ///   \cgalParamNBegin{free_stuck_vertices} moves the vertices left farthest from the input together with their one-rings (beyond the thesis); default true
 ///     \cgalParamType{`bool`} \cgalParamNEnd
