@@ -520,8 +520,8 @@ private:
   bool fill_border_notches()
   {
     if(!options_.fill_border_notches || fill_passes_ == 4 || !input_.has_border()) return false;
-    ++fill_passes_;
-    Border_notch_filler<TriangleMesh, VertexPointMap, Input> fill(mesh_, vpm_, input_, bounds_);
+    if(fill_passes_++ == 0) input_corners_ = input_border_corners(input_);
+    Border_notch_filler<TriangleMesh, VertexPointMap, Input> fill(mesh_, vpm_, input_, input_corners_, bounds_);
     const auto fills = fill([this](vertex_descriptor v) { return bool(on_input_border_[get(index_, v)]); },
                             [this] {  // the fit before the first fill, for keep_or_undo_the_fills()
                               if(!before_fills_ && options_.distance_guard)
@@ -999,6 +999,7 @@ private:
   std::vector<bool> claimed_;                      // taken in the current round
   std::vector<std::vector<std::size_t> > classes_;  // colour classes, for the smoothing
   int fill_passes_ = 0;                             // passes of fill_border_notches() made
+  std::vector<Point> input_corners_;                // the input's border corners, for the fills' ears
   int stuck_passes_ = 0;                            // passes of free_stuck_vertices() made
   std::unique_ptr<Fit_state> before_fills_;         // the fit before the first fill
   std::unique_ptr<Fit_state> before_stuck_;         // the fit before the first freeing of stuck vertices

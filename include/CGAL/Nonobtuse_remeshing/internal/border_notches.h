@@ -59,6 +59,33 @@ struct Border_fills
   std::vector<face_descriptor> faces;      // the new faces, in the order added
 };
 
+// The sum of the angles at v of its faces, in degrees, `point` giving the
+// points of `mesh`'s vertices.
+template <typename Mesh, typename PointOf>
+double angle_sum(const Mesh& mesh, typename boost::graph_traits<Mesh>::vertex_descriptor v, const PointOf& point)
+{
+  double angles = 0.;
+  for(auto h : halfedges_around_target(v, mesh))
+    if(!is_border(h, mesh))
+      angles += CGAL::approximate_angle(point(source(h, mesh)), point(v), point(target(next(h, mesh), mesh)));
+  return angles;
+}
+
+// The input's convex border corners: its border vertices whose faces'
+// angles sum to at most 150 degrees, where its border turns by 30 degrees
+// or more towards the surface.
+template <typename Input>
+std::vector<Epick::Point_3> input_border_corners(const Input& input)
+{
+  const auto& mesh = input.mesh();
+  const auto point = [&](auto v) { return input.point(v); };
+  std::vector<Epick::Point_3> corners;
+  for(auto h : halfedges(mesh))
+    if(is_border(h, mesh) && angle_sum(mesh, target(h, mesh), point) <= 150.)
+      corners.push_back(point(target(h, mesh)));
+  return corners;
+}
+
 template <typename TriangleMesh, typename VertexPointMap, typename Input>
 class Border_notch_filler
 {
@@ -84,8 +111,10 @@ class Border_notch_filler
   };
 
 public:
-  Border_notch_filler(TriangleMesh& mesh, VertexPointMap vpm, const Input& input, const Angle_bounds& bounds)
-    : mesh_(mesh), vpm_(vpm), points_(epick_points(vpm)), input_(input), bounds_(bounds)
+  // `corners`: the input's border corners (input_border_corners()).
+  Border_notch_filler(TriangleMesh& mesh, VertexPointMap vpm, const Input& input, const std::vector<Point>& corners,
+                      const Angle_bounds& bounds)
+    : mesh_(mesh), vpm_(vpm), points_(epick_points(vpm)), input_(input), corners_(corners), bounds_(bounds)
   {
   }
 
@@ -131,9 +160,10 @@ public:
     // then the corners, each at the mesh's border edge nearest it (as the
     // border was before this pass)
     std::vector<Segment> segments;
-    for(halfedge_descriptor h : border) segments.emplace_back(point(source(h, mesh_)), point(target(h, mesh_)));
+    if(!corners_.empty())
+      for(halfedge_descriptor h : border) segments.emplace_back(point(source(h, mesh_)), point(target(h, mesh_)));
     const Segment_tree nearest(segments.begin(), segments.end());
-    for(const Point& corner : input_corners()) {
+    for(const Point& corner : corners_) {
       const halfedge_descriptor h = border[nearest.closest_point_and_primitive(corner).second - segments.begin()];
       const vertex_descriptor a = source(h, mesh_), b = target(h, mesh_);
       if(!is_border(h, mesh_) || get(touched, a) || get(touched, b) || !fits_input_border(a) || !fits_input_border(b))
@@ -185,19 +215,16 @@ private:
     // and within a few edges of it
     const double inside = distance_to_input_border(pv);
     if(!(inside > 0.25 * length) || inside > 4. * length) return false;
-    double angles = 0.;
-    for(halfedge_descriptor h : halfedges_around_target(v, mesh_))
-      if(!is_border(h, mesh_))
-        angles += CGAL::approximate_angle(point(source(h, mesh_)), pv, point(target(next(h, mesh_), mesh_)));
-    if(!(angles > 200.)) return false;  // not a notch: a fill would fold over the mesh
+    if(!(angle_sum(mesh_, v, [this](vertex_descriptor x) { return point(x); }) > 200.))
+      return false;  // not a notch: a fill would fold over the mesh
     const double opening = CGAL::approximate_angle(pa, pv, pb);
+    const Vector along_a = face_normal(opposite(h1, mesh_)), along_b = face_normal(opposite(h2, mesh_));
     // one face where its angle at v is not obtuse; a and b must not be
     // joined already (the border cycle would close, or an edge would double)
     if(opening <= bounds_.max_degrees() && !halfedge(a, b, mesh_).second &&
        distance_to_input(CGAL::midpoint(pa, pb)) < 0.5 * inside) {
       const New_face f{{a, v, b}, Triangle(pa, pv, pb)};
-      if(certified(f.triangle) &&
-         acceptable(f, face_normal(opposite(h1, mesh_)), face_normal(opposite(h2, mesh_)), tree)) {
+      if(certified(f.triangle) && acceptable(f, along_a, along_b, tree)) {
         before_change();
         add(f);
         return true;
@@ -211,16 +238,18 @@ private:
     const Vector to_a = unit(pa - pv), to_b = unit(pb - pv);
     for(double turn : {0.5, 0.45, 0.55, 0.4, 0.6})
       for(double scale : {1., 0.9, 1.1, 0.8, 1.25, 0.7, 1.4, 0.6, 0.5})
-        if(two_faces(h1, h2, pv + scale * length * unit((1. - turn) * to_a + turn * to_b), inside, tree, w))
+        if(two_faces(h1, h2, pv + scale * length * unit((1. - turn) * to_a + turn * to_b), inside, along_a, along_b,
+                     tree, w))
           return true;
     return false;
   }
 
   // The fill of the notch between h1 = (a, v) and h2 = (v, b) with the two
-  // faces (a, v, w) and (w, v, b), w at `pw`, if they are acceptable; the
-  // new vertex is written to `w`.
-  bool two_faces(halfedge_descriptor h1, halfedge_descriptor h2, const Point& pw, double inside, const Tree& tree,
-                 vertex_descriptor& w)
+  // faces (a, v, w) and (w, v, b), w at `pw`, if they are acceptable (the
+  // faces across (a, v) and (v, b) have the unit normals `along_a` and
+  // `along_b`); the new vertex is written to `w`.
+  bool two_faces(halfedge_descriptor h1, halfedge_descriptor h2, const Point& pw, double inside, const Vector& along_a,
+                 const Vector& along_b, const Tree& tree, vertex_descriptor& w)
   {
     const vertex_descriptor a = source(h1, mesh_), v = target(h1, mesh_), b = target(h2, mesh_);
     const Point pa = point(a), pv = point(v), pb = point(b);
@@ -232,9 +261,7 @@ private:
     const Vector n1 = unit(f1.triangle.supporting_plane().orthogonal_vector());
     const Vector n2 = unit(f2.triangle.supporting_plane().orthogonal_vector());
     if(!(n1 * n2 >= 0.5)) return false;
-    if(!acceptable(f1, face_normal(opposite(h1, mesh_)), n2, tree) ||
-       !acceptable(f2, n1, face_normal(opposite(h2, mesh_)), tree))
-      return false;
+    if(!acceptable(f1, along_a, n2, tree) || !acceptable(f2, n1, along_b, tree)) return false;
     before_change();
     w = add_new_vertex(pw);
     add({{a, v, w}, f1.triangle});
@@ -267,26 +294,6 @@ private:
       return true;
     }
     return false;
-  }
-
-  // The input's convex border corners: its border vertices whose faces'
-  // angles sum to at most 150 degrees, where its border turns by 30
-  // degrees or more towards the surface.
-  std::vector<Point> input_corners() const
-  {
-    const auto& input = input_.mesh();
-    std::vector<Point> corners;
-    for(auto h : halfedges(input)) {
-      if(!is_border(h, input)) continue;
-      const auto c = target(h, input);
-      double angles = 0.;
-      for(auto g : halfedges_around_target(c, input))
-        if(!is_border(g, input))
-          angles += CGAL::approximate_angle(input_.point(source(g, input)), input_.point(c),
-                                            input_.point(target(next(g, input), input)));
-      if(angles <= 150.) corners.push_back(input_.point(c));
-    }
-    return corners;
   }
 
   vertex_descriptor add_new_vertex(const Point& p)
@@ -354,6 +361,7 @@ private:
   VertexPointMap vpm_;
   Points points_;
   const Input& input_;
+  const std::vector<Point>& corners_;
   const Angle_bounds bounds_;
   std::vector<New_face> added_;  // this pass's new faces
   std::function<void()> before_change_;  // until the pass's first change
