@@ -12,6 +12,7 @@
 #include <CGAL/Nonobtuse_remeshing/deform_to_fit.h>
 #include <CGAL/Nonobtuse_remeshing/internal/feature_attraction.h>
 #include <CGAL/Nonobtuse_remeshing/internal/parallel.h>
+#include <CGAL/Nonobtuse_remeshing/internal/untangling.h>
 
 #include <gtest/gtest.h>
 
@@ -429,5 +430,64 @@ TEST(DeformToFit, FeatureOwnersStayExactAsVerticesMove)
       if(samples[o.second].second) ASSERT_TRUE(flagged[o.first]);
     }
     for(Point& p : points) p = Point(p.x() + step(random), p.y() + step(random), p.z() + step(random));
+  }
+}
+
+// What the self-intersection tests of untangling.h read of a fit.
+struct Crossing_fit
+{
+  using face_descriptor = Mesh::Face_index;
+  using Face_pairs = std::vector<std::pair<face_descriptor, face_descriptor> >;
+  Crossing_fit(Mesh& mesh, int threads) : mesh_(mesh), points_(mesh.points()), pool_(threads)
+  {
+    for(Mesh::Vertex_index v : vertices(mesh)) vertices_.push_back(v);
+  }
+  nonobtuse_test::Point point(Mesh::Vertex_index v) const { return get(points_, v); }
+  Mesh& mesh_;
+  Mesh::Property_map<Mesh::Vertex_index, nonobtuse_test::Point> points_;
+  NR::internal::Thread_pool pool_;
+  std::vector<Mesh::Vertex_index> vertices_;
+};
+
+// The untangling and the distance guard test again only the faces that
+// moved and those whose boxes meet them: the list is the whole mesh's, as
+// vertices move, crossings come and go, on one and two threads.
+TEST(DeformToFit, CrossingsCountedAgainFromTheFacesThatMoved)
+{
+  const Mesh input = nonobtuse_test::load("rotor.off");
+  for(int threads : {1, 2}) {
+    SCOPED_TRACE(threads);
+    Mesh mesh = initial_mesh(input, 30);
+    mesh.collect_garbage();  // vertex i is vertices_[i]
+    Crossing_fit fit(mesh, threads);
+    double edges = 0.;
+    for(auto e : CGAL::edges(mesh))
+      edges += std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
+    const double edge = edges / double(num_edges(mesh));
+    std::mt19937 random(11);
+    std::uniform_int_distribution<std::size_t> pick(0, fit.vertices_.size() - 1);
+    std::uniform_real_distribution<double> step(-edge, edge);
+    Crossing_fit::Face_pairs pairs = NR::internal::intersecting_pairs(fit);
+    std::size_t most = pairs.size();
+    for(int trial = 0; trial < 12; ++trial) {
+      // a few scattered vertices and, every other trial, a patch around one
+      std::vector<std::size_t> moved;
+      for(int k = 0; k < 20; ++k) moved.push_back(pick(random));
+      if(trial % 2 == 1)
+        for(auto w : vertices_around_target(halfedge(fit.vertices_[moved[0]], mesh), mesh))
+          moved.push_back(std::size_t(w));
+      std::sort(moved.begin(), moved.end());
+      moved.erase(std::unique(moved.begin(), moved.end()), moved.end());
+      for(std::size_t i : moved) {
+        const nonobtuse_test::Point p = mesh.point(fit.vertices_[i]);
+        const double dx = step(random), dy = step(random), dz = step(random);
+        mesh.point(fit.vertices_[i]) = nonobtuse_test::Point(p.x() + dx, p.y() + dy, p.z() + dz);
+      }
+      const Crossing_fit::Face_pairs after = NR::internal::intersecting_pairs_after(fit, moved, pairs);
+      pairs = NR::internal::intersecting_pairs(fit);
+      ASSERT_EQ(after, pairs);
+      most = (std::max)(most, pairs.size());
+    }
+    EXPECT_GT(most, 0u);
   }
 }

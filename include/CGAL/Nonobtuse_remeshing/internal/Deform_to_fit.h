@@ -113,6 +113,8 @@ class Deform_to_fit
   using Clock = std::chrono::steady_clock;
 
 public:
+  using Face_pairs = std::vector<std::pair<face_descriptor, face_descriptor> >;
+
   Deform_to_fit(TriangleMesh& mesh, VertexPointMap vpm, const Input& input, double diagonal,
                 const Deform_to_fit_options& options, Visitor& visitor)
     : mesh_(mesh), vpm_(vpm), points_(epick_points(vpm)), input_(input), options_(options), visitor_(visitor), diagonal_(diagonal),
@@ -510,7 +512,6 @@ private:
       if(dirty_[i]) dirty.push_back(i);
     evaluate(dirty);
     moved_since_update_ = 0;
-    update_rms_distance();
   }
 
   // Beyond the thesis (border_notches.h): once the queue is converged, the
@@ -881,9 +882,13 @@ private:
   friend std::vector<std::size_t> region_around(const Fit& fit, const std::vector<std::size_t>& seeds, int rings);
   template <typename Fit>
   friend class Saved_region;
+  template <typename Fit, typename FaceRange>
+  friend typename Fit::Face_pairs intersecting_pairs_among(Fit& fit, const FaceRange& range);
   template <typename Fit>
-  friend std::vector<std::pair<typename Fit::face_descriptor, typename Fit::face_descriptor> > intersecting_pairs(
-      Fit& fit);
+  friend typename Fit::Face_pairs intersecting_pairs(Fit& fit);
+  template <typename Fit>
+  friend typename Fit::Face_pairs intersecting_pairs_after(Fit& fit, const std::vector<std::size_t>& moved,
+                                                          const typename Fit::Face_pairs& before);
   template <typename Fit>
   friend bool untangle_attempt(Fit& fit, const std::vector<std::size_t>& region, typename Fit::Goal goal,
                                std::vector<std::pair<typename Fit::face_descriptor, typename Fit::face_descriptor> >& pairs,
@@ -989,6 +994,8 @@ private:
   std::vector<Point> guard_points_;  // feature and face samples, for the distance guard
   double start_mesh_side_ = 0.;      // the guard's mesh side of the mesh as given (distance_guard.h)
   std::vector<face_descriptor> guard_hints_;  // each guard point's closest face at the guard's last measurement
+  // the self-intersecting face pairs the untangling left, for the guard that follows it
+  Face_pairs intersecting_;
   std::vector<Eigen::Vector3d> initial_;  // positions in the mesh as given
   std::vector<Eigen::Vector3d> target_;
   std::vector<double> cost_;  // the objective at each vertex, as its evaluation found it

@@ -189,7 +189,7 @@ void guard_the_distance(Fit& fit)
   const double limit = (std::max)(input_side(fit, Start_point_map<Fit>{&fit}, 0., nullptr), fit.start_mesh_side_);
   Vertex_list far(fit.vertices_.size());
   double distance = guard_distance(fit, limit, &far);
-  std::size_t pairs = fit.stats_.intersecting_pairs;
+  typename Fit::Face_pairs pairs = fit.intersecting_;  // the untangling's, just before
   for(int round = 1; round <= 8 && distance > limit && !fit.stopped(); ++round) {
     const std::vector<std::size_t> region = region_around(fit, far.indices, round);
     const Saved_region<Fit> saved(fit, region);
@@ -204,17 +204,17 @@ void guard_the_distance(Fit& fit)
       }
     Vertex_list still_far(fit.vertices_.size());
     double after = moves > 0 ? guard_distance(fit, limit, &still_far) : distance;
-    std::size_t pairs_after = pairs;
+    typename Fit::Face_pairs pairs_after;
     const std::size_t untangling_moves = fit.stats_.untangling_moves;
     if(moves > 0 && after < distance) {
       // Moving back towards the start can bring back crossings the start
       // mesh had and the untangling removed: the round's vertices of the
       // crossing faces take the untangling's smoothing moves (up to three
       // attempts), and the distance is measured again.
-      auto found = intersecting_pairs(fit);
+      auto found = intersecting_pairs_after(fit, region, pairs);
       Vertex_list in_round(fit.vertices_.size());
       for(std::size_t i : region) in_round.add(i);
-      for(int attempt = 0; attempt < 3 && found.size() > pairs && !fit.stopped(); ++attempt) {
+      for(int attempt = 0; attempt < 3 && found.size() > pairs.size() && !fit.stopped(); ++attempt) {
         std::vector<std::size_t> own;
         for(const auto& p : found)
           for(auto f : {p.first, p.second})
@@ -228,12 +228,12 @@ void guard_the_distance(Fit& fit)
         still_far = Vertex_list(fit.vertices_.size());
         after = guard_distance(fit, limit, &still_far);
       }
-      pairs_after = found.size();
+      pairs_after = std::move(found);
     }
-    if(after < distance && pairs_after <= pairs) {
+    if(after < distance && pairs_after.size() <= pairs.size()) {
       fit.stats_.guard_moves += moves;
       distance = after;
-      pairs = pairs_after;
+      pairs = std::move(pairs_after);
       far = std::move(still_far);
       continue;
     }
@@ -241,7 +241,8 @@ void guard_the_distance(Fit& fit)
     fit.stats_.untangling_moves = untangling_moves;
     saved.restore(fit);
   }
-  fit.stats_.intersecting_pairs = pairs;
+  fit.stats_.intersecting_pairs = pairs.size();
+  fit.intersecting_ = std::move(pairs);
   fit.stats_.start_distance = 100. * limit / fit.diagonal_;
   fit.stats_.end_distance = 100. * distance / fit.diagonal_;
   fit.stats_.guard_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
