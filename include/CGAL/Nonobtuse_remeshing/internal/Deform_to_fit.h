@@ -197,8 +197,7 @@ private:
       }
     }
     end_phase(Deform_to_fit_stage::optimization);
-    if(!stats_.budget_exhausted && !stats_.cancelled) untangle();
-    if(options_.distance_guard && !stats_.budget_exhausted && !stats_.cancelled) internal::guard_the_distance(*this);
+    if(!stats_.budget_exhausted && !stats_.cancelled) untangle_and_guard();
     if(before_fills_ && !stats_.budget_exhausted && !stats_.cancelled) keep_or_undo_the_fills();
     if(before_stuck_ && stats_.end_distance > stats_.start_distance && !stats_.budget_exhausted && !stats_.cancelled)
       undo_the_freeing();
@@ -874,10 +873,17 @@ private:
     stats_.stage = Deform_to_fit_stage::optimization;
   }
 
-  // Beyond the thesis: untangling.h.
-  void untangle() { internal::untangle(*this); }
+  // Beyond the thesis: the untangling (untangling.h), then the distance
+  // guard (distance_guard.h), which goes on from the pairs the untangling
+  // left.
+  void untangle_and_guard()
+  {
+    Face_pairs pairs = internal::untangle(*this);
+    if(options_.distance_guard && !stats_.budget_exhausted && !stats_.cancelled)
+      internal::guard_the_distance(*this, std::move(pairs));
+  }
   template <typename Fit>
-  friend void untangle(Fit& fit);
+  friend typename Fit::Face_pairs untangle(Fit& fit);
   template <typename Fit>
   friend std::vector<std::size_t> region_around(const Fit& fit, const std::vector<std::size_t>& seeds, int rings);
   template <typename Fit>
@@ -891,8 +897,7 @@ private:
                                                           const typename Fit::Face_pairs& before);
   template <typename Fit>
   friend bool untangle_attempt(Fit& fit, const std::vector<std::size_t>& region, typename Fit::Goal goal,
-                               std::vector<std::pair<typename Fit::face_descriptor, typename Fit::face_descriptor> >& pairs,
-                               bool strictly);
+                               typename Fit::Face_pairs& pairs, bool strictly);
 
   // Beyond the thesis (stuck_vertices.h): once the queue is converged (and
   // the borders filled), at most four passes free the vertices farthest from
@@ -934,8 +939,7 @@ private:
   void end_from(const Fit_state& s)
   {
     restore(s);
-    untangle();
-    if(!stats_.budget_exhausted && !stats_.cancelled) internal::guard_the_distance(*this);
+    untangle_and_guard();
   }
   template <typename Fit>
   friend bool free_stuck_vertices(Fit& fit);
@@ -958,7 +962,7 @@ private:
   template <typename Fit>
   friend double guard_distance(Fit& fit, double limit, Vertex_list* far);
   template <typename Fit>
-  friend void guard_the_distance(Fit& fit);
+  friend void guard_the_distance(Fit& fit, typename Fit::Face_pairs pairs);
 
   void update_rms_distance()
   {
@@ -994,8 +998,6 @@ private:
   std::vector<Point> guard_points_;  // feature and face samples, for the distance guard
   double start_mesh_side_ = 0.;      // the guard's mesh side of the mesh as given (distance_guard.h)
   std::vector<face_descriptor> guard_hints_;  // each guard point's closest face at the guard's last measurement
-  // the self-intersecting face pairs the untangling left, for the guard that follows it
-  Face_pairs intersecting_;
   std::vector<Eigen::Vector3d> initial_;  // positions in the mesh as given
   std::vector<Eigen::Vector3d> target_;
   std::vector<double> cost_;  // the objective at each vertex, as its evaluation found it

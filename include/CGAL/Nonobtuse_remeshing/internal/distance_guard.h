@@ -175,13 +175,14 @@ double guard_distance(Fit& fit, double limit, Vertex_list* far)
 // the rings around them, wider each round, move back towards their start
 // positions (ten passes of certified moves), for at most eight rounds; a
 // round is kept only if it lowers the distance and adds no self-intersecting
-// face pair, else it is rolled back. Measured on rotor at N = 50 (the one of
+// face pair (`pairs`: those the untangling left), else it is rolled back.
+// Measured on rotor at N = 50 (the one of
 // CGAL's 17 sample meshes whose fit ended farther than its start at N = 50
 // and 100): three passes and five rounds brought the guard's measure from
 // 1.91% only to 1.54%, the start being 1.43%; ten passes and eight rounds
 // reach 1.43% in six.
 template <typename Fit>
-void guard_the_distance(Fit& fit)
+void guard_the_distance(Fit& fit, typename Fit::Face_pairs pairs)
 {
   const auto start = std::chrono::steady_clock::now();
   // the mesh the fit started from: its input side now, from the start
@@ -189,7 +190,6 @@ void guard_the_distance(Fit& fit)
   const double limit = (std::max)(input_side(fit, Start_point_map<Fit>{&fit}, 0., nullptr), fit.start_mesh_side_);
   Vertex_list far(fit.vertices_.size());
   double distance = guard_distance(fit, limit, &far);
-  typename Fit::Face_pairs pairs = fit.intersecting_;  // the untangling's, just before
   for(int round = 1; round <= 8 && distance > limit && !fit.stopped(); ++round) {
     const std::vector<std::size_t> region = region_around(fit, far.indices, round);
     const Saved_region<Fit> saved(fit, region);
@@ -242,7 +242,6 @@ void guard_the_distance(Fit& fit)
     saved.restore(fit);
   }
   fit.stats_.intersecting_pairs = pairs.size();
-  fit.intersecting_ = std::move(pairs);
   fit.stats_.start_distance = 100. * limit / fit.diagonal_;
   fit.stats_.end_distance = 100. * distance / fit.diagonal_;
   fit.stats_.guard_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

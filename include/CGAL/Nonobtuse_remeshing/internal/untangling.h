@@ -31,9 +31,21 @@ namespace CGAL {
 namespace Nonobtuse_remeshing {
 namespace internal {
 
+// Face pairs ordered by the indices of their faces, each pair's smaller
+// index first: the order of the lists below, the same for any number of
+// workers.
+template <typename Mesh>
+auto face_pair_order(const Mesh& mesh)
+{
+  const auto index = get_initialized_face_index_map(mesh);
+  return [index](const auto& a, const auto& b) {
+    return std::make_pair(get(index, a.first), get(index, a.second)) <
+           std::make_pair(get(index, b.first), get(index, b.second));
+  };
+}
+
 // The self-intersecting pairs among the faces `range` of the fit's mesh, on
-// the fit's workers, each pair and the list in the order of the face
-// indices (the same for any number of workers).
+// the fit's workers, in face_pair_order.
 template <typename Fit, typename FaceRange>
 typename Fit::Face_pairs intersecting_pairs_among(Fit& fit, const FaceRange& range)
 {
@@ -46,20 +58,13 @@ typename Fit::Face_pairs intersecting_pairs_among(Fit& fit, const FaceRange& ran
 #endif
     Polygon_mesh_processing::self_intersections(range, fit.mesh_, std::back_inserter(pairs), np);
   const auto index = get_initialized_face_index_map(fit.mesh_);
-  std::vector<std::pair<std::size_t, std::size_t> > keys;
-  typename Fit::Face_pairs by_index;
-  for(auto& p : pairs) {
+  for(auto& p : pairs)
     if(get(index, p.second) < get(index, p.first)) std::swap(p.first, p.second);
-    keys.emplace_back(get(index, p.first), get(index, p.second));
-  }
-  std::vector<std::size_t> order(pairs.size());
-  for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
-  for(std::size_t i : order) by_index.push_back(pairs[i]);
-  return by_index;
+  std::sort(pairs.begin(), pairs.end(), face_pair_order(fit.mesh_));
+  return pairs;
 }
 
-// The mesh's self-intersecting face pairs, in the order of the face indices.
+// The mesh's self-intersecting face pairs, in face_pair_order.
 template <typename Fit>
 typename Fit::Face_pairs intersecting_pairs(Fit& fit)
 {
@@ -107,17 +112,12 @@ typename Fit::Face_pairs intersecting_pairs_after(Fit& fit, const std::vector<st
                          again.push_back(b.info());
                        }
                      });
-  std::sort(again.begin(), again.end(),
-            [&](face_descriptor a, face_descriptor b) { return get(index, a) < get(index, b); });
-  typename Fit::Face_pairs pairs;
-  for(const auto& p : before)
-    if(!is_moved[get(index, p.first)] && !is_moved[get(index, p.second)]) pairs.push_back(p);
-  for(const auto& p : intersecting_pairs_among(fit, again))
-    if(is_moved[get(index, p.first)] || is_moved[get(index, p.second)]) pairs.push_back(p);
-  std::sort(pairs.begin(), pairs.end(), [&](const auto& a, const auto& b) {
-    return std::make_pair(get(index, a.first), get(index, a.second)) <
-           std::make_pair(get(index, b.first), get(index, b.second));
-  });
+  const auto moves = [&](const auto& p) { return is_moved[get(index, p.first)] || is_moved[get(index, p.second)]; };
+  typename Fit::Face_pairs kept, found, pairs;
+  std::remove_copy_if(before.begin(), before.end(), std::back_inserter(kept), moves);
+  const typename Fit::Face_pairs among = intersecting_pairs_among(fit, again);
+  std::copy_if(among.begin(), among.end(), std::back_inserter(found), moves);
+  std::merge(kept.begin(), kept.end(), found.begin(), found.end(), std::back_inserter(pairs), face_pair_order(fit.mesh_));
   return pairs;
 }
 
@@ -185,8 +185,7 @@ private:
 
 template <typename Fit>
 bool untangle_attempt(Fit& fit, const std::vector<std::size_t>& region, typename Fit::Goal goal,
-                      std::vector<std::pair<typename Fit::face_descriptor, typename Fit::face_descriptor> >& pairs,
-                      bool strictly);
+                      typename Fit::Face_pairs& pairs, bool strictly);
 
 // Beyond the thesis: where the input is thinner than a cube, the fit can
 // fold the mesh through itself. The vertices of each self-intersecting
@@ -194,15 +193,15 @@ bool untangle_attempt(Fit& fit, const std::vector<std::size_t>& region, typename
 // smoothing moves, or else move back towards their positions in the
 // initial mesh (constrained and certified like any other move), keeping
 // only what lowers the number of pairs, for at most five rounds; what
-// remains is counted.
+// remains is counted and returned (the distance guard goes on from it).
 template <typename Fit>
-void untangle(Fit& fit)
+typename Fit::Face_pairs untangle(Fit& fit)
 {
   using Clock = std::chrono::steady_clock;
   using face_descriptor = typename Fit::face_descriptor;
   using vertex_descriptor = typename Fit::vertex_descriptor;
   const Clock::time_point start = Clock::now();
-  std::vector<std::pair<face_descriptor, face_descriptor> > pairs = intersecting_pairs(fit);
+  typename Fit::Face_pairs pairs = intersecting_pairs(fit);
   fit.stats_.intersecting_pairs_found = pairs.size();
   for(int round = 1; round <= 5 && !pairs.empty() && !fit.stats_.budget_exhausted && !fit.stats_.cancelled; ++round) {
     Vertex_list own(fit.vertices_.size());
@@ -218,8 +217,8 @@ void untangle(Fit& fit)
     untangle_attempt(fit, own.indices, Fit::Goal::restore, pairs, true);
   }
   fit.stats_.intersecting_pairs = pairs.size();
-  fit.intersecting_ = std::move(pairs);
   fit.stats_.untangling_seconds = fit.seconds_since(start);
+  return pairs;
 }
 
 // Moves the vertices of `region` towards `goal` (three passes); keeps the
@@ -227,10 +226,8 @@ void untangle(Fit& fit)
 // updates `pairs`, else rolls them back. Returns whether pairs were removed.
 template <typename Fit>
 bool untangle_attempt(Fit& fit, const std::vector<std::size_t>& region, typename Fit::Goal goal,
-                      std::vector<std::pair<typename Fit::face_descriptor, typename Fit::face_descriptor> >& pairs,
-                      bool strictly)
+                      typename Fit::Face_pairs& pairs, bool strictly)
 {
-  using face_descriptor = typename Fit::face_descriptor;
   const Saved_region<Fit> saved(fit, region);
   std::size_t moves = 0;
   for(int pass = 0; pass < 3; ++pass)
@@ -240,7 +237,7 @@ bool untangle_attempt(Fit& fit, const std::vector<std::size_t>& region, typename
       if(fit.stopped()) break;
       if(fit.solve(i, goal, best, improvement) && improvement > fit.threshold_ && fit.apply(i, best)) ++moves;
     }
-  std::vector<std::pair<face_descriptor, face_descriptor> > left = intersecting_pairs_after(fit, region, pairs);
+  typename Fit::Face_pairs left = intersecting_pairs_after(fit, region, pairs);
   if(left.size() < pairs.size() || (!strictly && left.size() == pairs.size())) {
     const bool removed = left.size() < pairs.size();
     fit.stats_.untangling_moves += moves;
