@@ -202,8 +202,8 @@ int remesh_command(int argc, char** argv)
     ("max-distance", po::value<double>(&max_distance),
      "instead of --resolution or --target-vertices: the fewest vertices (the decimation's coarsest level, "
      "levels 10% apart) whose symmetric Hausdorff distance to INPUT is at most PCT % of its bounding-box "
-     "diagonal. The grid's cube is 1.25 PCT, refined while the fitted mesh is over 0.8 PCT (up to "
-     "--max-resolution, default 4 times the first resolution). The distance is measured on the written file (CGAL's bounded-error Hausdorff "
+     "diagonal. The first grid's cube is 5 PCT (at least 16 cubes), refined while the fitted mesh is over "
+     "0.8 PCT (up to --max-resolution, default 4 times the resolution of cubes of 1.25 PCT). The distance is measured on the written file (CGAL's bounded-error Hausdorff "
      "distance plus its error bound, PCT / 50); exit code 5 when the bound is not met, the closest mesh "
      "found written")
     ("oversampling", po::value<double>(&oversampling)->default_value(1.),
@@ -216,8 +216,8 @@ int remesh_command(int argc, char** argv)
      "--max-resolution; with --target-vertices the fitted mesh is then decimated to V. ignore: the grid of "
      "--resolution, or of the budget alone")
     ("max-resolution", po::value<int>(&max_resolution),
-     "cap of that refinement (and of --max-distance's), in [1, 1024] (default: twice the first resolution, "
-     "four times with --max-distance)")
+     "cap of that refinement (and of --max-distance's), in [1, 1024] (default: twice the first resolution; "
+     "with --max-distance, 4 times the resolution of cubes of 1.25 PCT)")
     ("stop-after", po::value<std::string>(&stop_after)->default_value("decimation"),
      "last stage to run: init, valence, fit or decimation (which runs only when the fitted mesh is over "
      "--target-vertices, or over the vertex count of the grid --resolution gives after a refinement for "

@@ -65,7 +65,8 @@ namespace Nonobtuse_remeshing {
 ///     \cgalParamType{`std::size_t`} \cgalParamNEnd
 ///   \cgalParamNBegin{max_distance} instead of `resolution` and `target_vertices`, when not 0: the
 ///     fewest vertices whose symmetric Hausdorff distance to `input` is at most this fraction of
-///     its bounding-box diagonal, in (0, 1]. The grid's cube is 1.25 times the bound, refined while
+///     its bounding-box diagonal, in (0, 1]. The first grid's cube is 5 times the bound (at least 16
+///     cubes along the longest side, unless cubes of 1.25 times the bound are fewer), refined while
 ///     the fitted mesh is over 0.8 times it; the fitted mesh is then decimated to the coarsest of
 ///     its levels (10% apart) measured within the bound with CGAL's bounded-error Hausdorff distance
 ///     (error: a fiftieth of the bound, added to each measurement). `Distance_bound_statistics`
@@ -80,8 +81,8 @@ namespace Nonobtuse_remeshing {
 ///     \cgalParamType{`bool`} \cgalParamNEnd
 ///   \cgalParamNBegin{max_resolution} the cap of that refinement and of the one for `max_distance`,
 ///     in [1, 1024]; default 0: twice the resolution given or chosen for the target (about 4 times
-///     the vertices), four times the first with `max_distance`; a cap below the resolution means no
-///     refinement
+///     the vertices), with `max_distance` four times the resolution of cubes of 1.25 times the
+///     bound; a cap below the resolution means no refinement
 ///     \cgalParamType{`int`} \cgalParamNEnd
 ///   \cgalParamNBegin{sign_source} corner signs of the Marching Cubes; default `Sign_source::automatic`
 ///     \cgalParamType{`Sign_source`} \cgalParamNEnd

@@ -35,6 +35,7 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -57,28 +58,34 @@ constexpr double default_oversampling = 1.;
 // is found close to the one the budget gave.
 constexpr double refinement_factor = 1.25;
 
-// With a distance bound d, the first initial mesh has cubes of 1.25 d. The
-// fitted mesh's Hausdorff distance to the input, measured at 10,000 vertices
-// on CGAL's 17 sample meshes, is 0.13 to 0.8 cubes on curved inputs and up
-// to 1.35 cubes at the border corners and sharp edges of CAD parts, roughly
-// in proportion to the cube. While the fitted mesh is over 0.8 d (within d
-// but with little room left for the decimation, or over it) the grid is
-// refined by the ratio that should bring it to 0.6 d (1.25 to 2.5 times the
-// resolution), up to 4 times the first resolution. Measured at d = 1%:
-// cubes of 0.5 d give 1.7 to 7 times the output vertices of 1.25 d on
-// sphere, hand and elephant (the decimation's quadrics sum more planes per
-// area, so its ceiling stops it sooner) in 3 to 6 times the time; 2 d
-// gives 0.8 to 1.8 times on those and pig and mesh_with_border.
-constexpr double cubes_per_distance = 1.25;
+// With a distance bound d, the first initial mesh has cubes of 5 d (but at
+// least 16 cubes along the longest side, unless cubes of 1.25 d are fewer).
+// The fitted mesh's Hausdorff distance to the input, measured at 10,000
+// vertices on CGAL's 17 sample meshes, is 0.13 to 0.8 cubes on curved
+// inputs and up to 1.35 cubes at the border corners and sharp edges of CAD
+// parts, roughly in proportion to the cube. While the fitted mesh is over
+// 0.8 d (within d but with little room left for the decimation, or over
+// it) the grid is refined by the ratio that should bring it to 0.6 d (1.25
+// to 2.5 times the resolution), up to 4 times the resolution of cubes of
+// 1.25 d; a finer grid that fits no closer ends the refinement only from
+// that resolution on (the distance at border corners does not fall with the
+// cube at every step). Coarse to fine because a finer fitted mesh decimates
+// less far: the decimation's quadrics sum more planes per area, so its
+// ceiling stops it sooner. Measured at d = 0.2%: sphere, blobby and knot1
+// fitted on grids for 10,000 to 30,000 vertices decimate to 4,975, 15,670
+// and 15,302 vertices within the bound, where the first grid of cubes of
+// 1.25 d (130,000 to 300,000 vertices) ended at 130,386, 100,190 and 143,810.
+constexpr double first_cubes_per_distance = 5., finest_cubes_per_distance = 1.25;
+constexpr int coarsest_first_resolution = 16;
 constexpr double distance_room = 0.8, distance_aim = 0.6;
 
-// The resolution whose cube is cubes_per_distance times `max_distance`, a
-// fraction of `diagonal`.
+// The resolution whose cube is `cubes` times `max_distance`, a fraction of
+// `diagonal`.
 template <typename TriangleMesh>
-int resolution_for_max_distance(const TriangleMesh& input, double max_distance, double diagonal)
+int resolution_for_max_distance(const TriangleMesh& input, double max_distance, double diagonal, double cubes)
 {
   const double longest = longest_side_of_faces(input, get(CGAL::vertex_point, input));
-  return int((std::min)(1024., std::ceil(longest / (cubes_per_distance * max_distance * diagonal))));
+  return int((std::min)(1024., std::ceil(longest / (cubes * max_distance * diagonal))));
 }
 
 inline void describe_progress(Remeshing_progress& p, const Deform_to_fit_statistics& s)
@@ -139,9 +146,17 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
   const double input_diagonal = bbox_diagonal(input);
   stats.distance.max_distance = settings.max_distance;
   stats.distance.measurement_error = settings.max_distance / 50.;
-  stats.resolution = stats.target_vertices > 0 ? resolution_for_target_vertices(input, initial_vertices)
-                     : settings.max_distance > 0. ? resolution_for_max_distance(input, settings.max_distance, input_diagonal)
-                                               : settings.resolution;
+  // with a distance bound, the resolution whose fitted mesh no longer needs to come closer
+  const int settled_resolution =
+      settings.max_distance > 0.
+          ? resolution_for_max_distance(input, settings.max_distance, input_diagonal, finest_cubes_per_distance)
+          : 0;
+  stats.resolution =
+      stats.target_vertices > 0 ? resolution_for_target_vertices(input, initial_vertices)
+      : settings.max_distance > 0.
+          ? (std::max)(resolution_for_max_distance(input, settings.max_distance, input_diagonal, first_cubes_per_distance),
+                       (std::min)(coarsest_first_resolution, settled_resolution))
+          : settings.resolution;
   if(stats.resolution < 1 || stats.resolution > 1024)
     throw Bad_parameter("the resolution must lie in [1, 1024]");
   stats.keep_topology = settings.keep_topology;
@@ -248,7 +263,8 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
               (std::max)(stats.resolution,
                          settings.max_resolution > 0
                              ? settings.max_resolution
-                             : (std::min)(1024, (settings.max_distance > 0. ? 4 : 2) * stats.resolution));
+                             : (std::min)(1024, settings.max_distance > 0. ? 4 * settled_resolution
+                                                                           : 2 * stats.resolution));
       } else {
         TriangleMesh finer;
         Marching_cubes_result r = build(resolution, finer);
@@ -351,36 +367,38 @@ Nonobtuse_remeshing_statistics nonobtuse_remesh_with(const TriangleMesh& input, 
       return d / input_diagonal;
     };
     if(settings.max_distance > 0. && stats.fit_run && !stats.cancelled) {
-      bound.fitted_distance = measure(output);
-      while(bound.fitted_distance > distance_room * settings.max_distance && stats.resolution < stats.max_resolution) {
-        const double factor =
-            (std::min)(2.5, (std::max)(1.25, bound.fitted_distance / (distance_aim * settings.max_distance)));
+      double distance = bound.fitted_distance = measure(output);  // of `output`; bound's: of the closest
+      // the closest mesh while `output` is a finer one being built or farther
+      std::unique_ptr<std::pair<TriangleMesh, Nonobtuse_remeshing_statistics> > closest;
+      while(distance > distance_room * settings.max_distance && stats.resolution < stats.max_resolution) {
+        const double factor = (std::min)(2.5, (std::max)(1.25, distance / (distance_aim * settings.max_distance)));
         const int resolution = (std::min)(stats.max_resolution, int(std::ceil(factor * stats.resolution)));
-        TriangleMesh closest = output;
-        const Nonobtuse_remeshing_statistics closest_stats = stats;
-        const auto keep_closest = [&]() {  // the times and measurements stay counted
-          const Distance_bound_statistics measured = bound;
-          output = std::move(closest);
-          stats = closest_stats;
-          bound = measured;
-          stats.initial_mesh.seconds = building;
-          stats.fit.seconds = fitting;
-        };
+        if(!closest) closest = std::make_unique<std::pair<TriangleMesh, Nonobtuse_remeshing_statistics> >(output, stats);
         try {
           if(!initial_stage(resolution)) break;
         } catch(const Bad_input&) {  // over the memory budget, or a grid too fine for the input
-          keep_closest();
           break;
         }
         ++bound.refinements;
         going_on = valence_and_fit_stages();
         if(stats.cancelled) break;
-        const double d = measure(output);
-        if(d >= bound.fitted_distance) {  // no closer: the closer mesh stays
-          keep_closest();
-          break;
+        distance = measure(output);
+        if(distance < bound.fitted_distance) {
+          bound.fitted_distance = distance;
+          closest.reset();
+        } else if(stats.resolution >= settled_resolution) {
+          break;  // no closer, on a grid fine enough: the closer mesh stays
         }
-        bound.fitted_distance = d;
+      }
+      if(closest) {  // the times, the measurements and a cancel stay counted
+        const Distance_bound_statistics measured = bound;
+        const bool cancelled = stats.cancelled;
+        output = std::move(closest->first);
+        stats = std::move(closest->second);
+        bound = measured;
+        stats.cancelled = cancelled;
+        stats.initial_mesh.seconds = building;
+        stats.fit.seconds = fitting;
       }
       bound.distance = bound.fitted_distance;
       bound.met = bound.distance <= settings.max_distance;
