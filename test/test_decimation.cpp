@@ -10,6 +10,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/nonobtuse_remeshing.h>
+#include <CGAL/Nonobtuse_remeshing/internal/distance_bounded_decimation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
 
@@ -17,6 +18,7 @@
 
 #include "test_support.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -203,6 +205,56 @@ TEST(Decimation, FlatPatchHalves)
   EXPECT_EQ(after.non_manifold, 0u);
   EXPECT_LE(below_floor(reread), low);
   for(auto v : vertices(reread)) EXPECT_LE(std::abs(reread.point(v).z()), 1e-12);  // flat up to rounding
+}
+
+// The holds of the decimation under a distance bound: the points of a level
+// far from the input are found both ways (all of them on a copy lifted by
+// 0.5, over a threshold of 0.4; the farthest when none is over 0.6), a
+// vertex is held with its face's neighbours, and no collapse takes a held
+// vertex: with the relaxation off, every held point stays, while the free
+// half of a flat patch is decimated.
+TEST(Decimation, HeldVerticesStayWhereTheyAre)
+{
+  Mesh mesh = triangular_grid(12, 12);
+  Mesh lifted = mesh;
+  for(auto v : vertices(lifted)) lifted.point(v) = lifted.point(v) + CGAL::Epick::Vector_3(0., 0., 0.5);
+  const std::size_t n = vertices(mesh).size();
+  const std::size_t samples = 2 * (n + faces(mesh).size());  // vertices and centroids, both ways
+  EXPECT_EQ(NR::internal::far_points(lifted, mesh, 0.4).size(), samples);
+  EXPECT_EQ(NR::internal::far_points(lifted, mesh, 0.6).size(), samples);
+  EXPECT_TRUE(NR::internal::far_points(mesh, mesh, 0.).empty());
+
+  const auto around_one = NR::internal::held_vertices(mesh, std::vector<Point>{Point(6.2, 5.1, 0.)});
+  std::size_t count = 0;
+  for(auto v : vertices(mesh)) count += get(around_one, v);
+  EXPECT_GE(count, 9u);   // a face's vertices and their rings
+  EXPECT_LE(count, 12u);
+
+  const Mesh full = mesh;
+  std::vector<Point> spots, held_points;
+  for(auto v : vertices(mesh))
+    if(mesh.point(v).x() < 6.) spots.push_back(mesh.point(v));
+  const auto held = NR::internal::held_vertices(mesh, spots);
+  for(auto v : vertices(mesh))
+    if(get(held, v)) held_points.push_back(mesh.point(v));
+  ASSERT_LT(held_points.size(), n);
+  NR::internal::Angle_bounded_decimation_options o;
+  o.relaxation = false;
+  const double diagonal = NR::internal::certified_mesh_diagonal(mesh, mesh.points());
+  const auto s = NR::internal::angle_bounded_decimation_with(
+      mesh, mesh.points(), o, diagonal, {n / 4}, full, full.points(),
+      [](const NR::Angle_bounded_decimation_statistics&) { return true; },
+      [](std::size_t, bool, const NR::Angle_bounded_decimation_statistics&) {},
+      [&held](Mesh::Vertex_index v) { return bool(get(held, v)); });
+  mesh.collect_garbage();
+  EXPECT_GT(s.collapses, 0u);
+  EXPECT_GT(s.frozen_refusals, 0u);
+  EXPECT_EQ(vertices(mesh).size(), n - s.collapses);
+  EXPECT_GT(vertices(mesh).size(), held_points.size());
+  std::vector<Point> kept(mesh.points().begin(), mesh.points().end());
+  std::sort(kept.begin(), kept.end());
+  for(const Point& p : held_points) EXPECT_TRUE(std::binary_search(kept.begin(), kept.end(), p));
+  EXPECT_TRUE(NR::certify_angle_bounds(nonobtuse_test::written_and_reread(mesh, "held.off")).is_certified());
 }
 
 // The acceptance criteria on a closed and an open sample: one decimation

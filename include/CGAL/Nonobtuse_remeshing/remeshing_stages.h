@@ -145,6 +145,7 @@ struct Distance_bound_statistics
   bool met = false;                ///< `distance` is at most `max_distance`
   int refinements = 0;             ///< finer grids built because the fitted mesh was over the bound
   std::size_t levels = 0;          ///< decimation levels kept as candidates, the fitted mesh included
+  int holds = 0;                   ///< decimation passes run again with vertices held where a level went over
   std::size_t measurements = 0;    ///< Hausdorff distances measured
   double seconds = 0.;             ///< spent measuring
 };
@@ -161,6 +162,7 @@ void for_each_field(const Distance_bound_statistics& d, F&& f)
   f("distance", d.distance);
   f("met", d.met);
   f("refinements", d.refinements);
+  f("holds", d.holds);
   f("levels", d.levels);
   f("measurements", d.measurements);
   f("seconds", d.seconds);

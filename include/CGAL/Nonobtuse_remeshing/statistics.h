@@ -138,6 +138,7 @@ struct Angle_bounded_decimation_statistics
   /// at the form's unconstrained minimum or at the drum-free pre-test
   std::size_t placements_over_ceiling = 0;
   std::size_t valence_refusals = 0;        ///< placements and collapses refused by the valence floor (attempts)
+  std::size_t frozen_refusals = 0;  ///< placements refused at a vertex held where a level went over a distance bound
   std::size_t certification_refusals = 0;  ///< collapses refused by the exact certification (attempts)
   std::size_t topology_refusals = 0;       ///< collapses refused by CGAL's topology tests (its fold test reports none)
   std::size_t rounds = 0;            ///< runs of edge_collapse
@@ -268,6 +269,7 @@ void for_each_field(const Angle_bounded_decimation_statistics& s, F&& f)
   f("empty_regions", s.empty_regions);
   f("placements_over_ceiling", s.placements_over_ceiling);
   f("valence_refusals", s.valence_refusals);
+  f("frozen_refusals", s.frozen_refusals);
   f("certification_refusals", s.certification_refusals);
   f("topology_refusals", s.topology_refusals);
   f("rounds", s.rounds);

@@ -198,6 +198,9 @@ public:
 
   void collapsed() { --vertices_; }
 
+  // The vertices no collapse may take (none when `held` is empty).
+  void hold(std::function<bool(vertex_descriptor)> held) { context_.frozen = std::move(held); }
+
 private:
   // Deform-to-fit of the decimated mesh to the full one (certified after
   // every move, connectivity unchanged); the quadrics stay.
@@ -302,10 +305,12 @@ Angle_bounded_decimation_statistics angle_bounded_decimation_with(
     TriangleMesh& mesh, VertexPointMap vpm, const Angle_bounded_decimation_options& o, double diagonal,
     const std::vector<std::size_t>& targets, const TriangleMesh& reference, ReferencePointMap reference_vpm,
     const Keep_going_function<Angle_bounded_decimation_statistics>& keep_going,
-    const std::function<void(std::size_t, bool, const Angle_bounded_decimation_statistics&)>& level)
+    const std::function<void(std::size_t, bool, const Angle_bounded_decimation_statistics&)>& level,
+    const std::function<bool(typename boost::graph_traits<TriangleMesh>::vertex_descriptor)>& held = {})
 {
   auto visitor = keep_going_relay(keep_going);
   Angle_bounded_decimation<TriangleMesh, VertexPointMap, decltype(visitor)> decimation(mesh, vpm, o, diagonal, visitor);
+  decimation.hold(held);
   return decimation.run(targets, reference, reference_vpm, level);
 }
 
@@ -328,7 +333,8 @@ template Angle_bounded_decimation_statistics angle_bounded_decimation_with(
     Compiled_mesh&, Compiled_point_map, const Angle_bounded_decimation_options&, double,
     const std::vector<std::size_t>&, const Compiled_mesh&, Compiled_point_map,
     const Keep_going_function<Angle_bounded_decimation_statistics>&,
-    const std::function<void(std::size_t, bool, const Angle_bounded_decimation_statistics&)>&);
+    const std::function<void(std::size_t, bool, const Angle_bounded_decimation_statistics&)>&,
+    const std::function<bool(boost::graph_traits<Compiled_mesh>::vertex_descriptor)>&);
 } // namespace internal
 } // namespace Nonobtuse_remeshing
 } // namespace CGAL

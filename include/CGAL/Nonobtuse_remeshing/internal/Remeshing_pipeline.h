@@ -71,10 +71,10 @@ constexpr double refinement_factor = 1.25;
 // that resolution on (the distance at border corners does not fall with the
 // cube at every step). Coarse to fine because a finer fitted mesh decimates
 // less far: the decimation's quadrics sum more planes per area, so its
-// ceiling stops it sooner. Measured at d = 0.2%: sphere, blobby and knot1
-// fitted on grids for 10,000 to 30,000 vertices decimate to 4,975, 15,670
-// and 15,302 vertices within the bound, where the first grid of cubes of
-// 1.25 d (130,000 to 300,000 vertices) ended at 130,386, 100,190 and 143,810.
+// ceiling stops it sooner. Measured at d = 0.2%, before the decimation's
+// holds: sphere, blobby and knot1 end at 2,531, 31,802 and 7,608 vertices,
+// where the first grid of cubes of 1.25 d (130,000 to 300,000 vertices)
+// ended at 130,386, 100,190 and 143,810.
 constexpr double first_cubes_per_distance = 5., finest_cubes_per_distance = 1.25;
 constexpr int coarsest_first_resolution = 16;
 constexpr double distance_room = 0.8, distance_aim = 0.6;

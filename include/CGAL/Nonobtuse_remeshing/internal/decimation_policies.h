@@ -35,6 +35,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -57,6 +58,7 @@ struct Decimation_context
   std::size_t filter_refusals = 0, non_collapsable = 0;  // their difference: CGAL's topology and fold tests
 
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  std::function<bool(vertex_descriptor)> frozen;  // vertices no collapse may take, when set
 
   // Q_u + Q_v of the edge (v0, v1); then the weight eps of its tie break.
   Quadric sum(vertex_descriptor v0, vertex_descriptor v1) const
@@ -136,6 +138,10 @@ public:
   {
     using Point = typename Profile::Point;
     Angle_bounded_decimation_statistics& s = *context_->statistics;
+    if(context_->frozen && (context_->frozen(profile.v0()) || context_->frozen(profile.v1()))) {
+      ++s.frozen_refusals;
+      return boost::none;
+    }
     // Cheap and monotone (valences only fall until an edge is re-costed), so
     // tested before the QP; the filter tests it again at collapse time.
     if(!context_->valences_allow(profile)) {
