@@ -16,14 +16,11 @@
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_DISTANCE_BOUNDED_DECIMATION_H
 
 #include <CGAL/Nonobtuse_remeshing/internal/Angle_bounded_decimation.h>
+#include <CGAL/Nonobtuse_remeshing/internal/distance_measures.h>
 #include <CGAL/Nonobtuse_remeshing/internal/mesh_helpers.h>
 #include <CGAL/Nonobtuse_remeshing/remeshing_stages.h>
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
 #include <CGAL/Dynamic_property_map.h>
-#include <CGAL/Kernel_traits.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -33,6 +30,7 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <type_traits>
 #include <vector>
 
@@ -85,12 +83,6 @@ auto soup_of(const TriangleMesh& mesh)
   return soup;
 }
 
-template <typename TriangleMesh>
-using Face_tree = AABB_tree<AABB_traits<
-    typename Kernel_traits<typename boost::property_traits<typename boost::property_map<
-        TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type>::Kernel,
-    AABB_face_graph_triangle_primitive<TriangleMesh> > >;
-
 // The vertices and face centroids of `mesh` farther than `threshold` from
 // the faces in `tree`, appended to `far`; returns the farthest distance of
 // them all.
@@ -114,22 +106,23 @@ double add_far_points(const TriangleMesh& mesh, const Face_tree<TriangleMesh>& t
   return farthest;
 }
 
-// Where `level` goes over a distance of `threshold` to `input`, both ways:
-// the vertices and face centroids of each farther than that from the other;
-// at least the farthest of them (the measured maximum can lie inside a
-// face, where no sample is over the threshold).
+// Where `level` goes over a distance of `threshold` to `input` (whose faces
+// are in `input_tree`), both ways: the vertices and face centroids of each
+// farther than that from the other; at least the farthest of them (the
+// measured maximum can lie inside a face, where no sample is over the
+// threshold).
 template <typename TriangleMesh>
-auto far_points(const TriangleMesh& level, const TriangleMesh& input, double threshold)
+auto far_points(const TriangleMesh& level, const TriangleMesh& input, const Face_tree<TriangleMesh>& input_tree,
+                double threshold)
 {
   using Point = typename boost::property_traits<
       typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type;
   std::vector<Point> far;
-  const Face_tree<TriangleMesh> to_input(faces(input).first, faces(input).second, input),
-      to_level(faces(level).first, faces(level).second, level);
-  const double farthest = (std::max)(add_far_points(level, to_input, threshold, far),
+  const Face_tree<TriangleMesh> to_level(faces(level).first, faces(level).second, level);
+  const double farthest = (std::max)(add_far_points(level, input_tree, threshold, far),
                                      add_far_points(input, to_level, threshold, far));
   if(far.empty() && farthest > 0.) {
-    add_far_points(level, to_input, 0.9 * farthest, far);
+    add_far_points(level, input_tree, 0.9 * farthest, far);
     add_far_points(input, to_level, 0.9 * farthest, far);
   }
   return far;
@@ -184,6 +177,7 @@ Angle_bounded_decimation_statistics decimate_within_distance(TriangleMesh& mesh,
   using Point = typename boost::property_traits<decltype(points)>::value_type;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   std::vector<Point> spots;  // where levels went over the bound
+  std::unique_ptr<Face_tree<TriangleMesh> > surface_tree;  // built at the first hold
   const double ceiling = has_max_error ? options.max_error : bounds.max_distance * input_diagonal / diagonal;
   for(int pass = 0; pass < (has_max_error ? 1 : 4); ++pass) {
     options.max_error = ceiling * double(1 << pass);
@@ -254,18 +248,19 @@ Angle_bounded_decimation_statistics decimate_within_distance(TriangleMesh& mesh,
     // last mesh) is over it, its vertices are held, and the pass runs again
     const bool hold = !has_max_error && bounds.holds < max_distance_holds;
     if(hold) {
-      const double threshold = distance_hold_threshold * bounds.max_distance * input_diagonal;
-      std::vector<Point> far;
-      if(bad < levels.size()) {
-        TriangleMesh over;
-        Polygon_mesh_processing::polygon_soup_to_polygon_mesh(levels[bad].points, levels[bad].triangles, over);
-        far = far_points(over, surface, threshold);
-        const auto farther = far_points(mesh, surface, bounds.max_distance * input_diagonal);
-        far.insert(far.end(), farther.begin(), farther.end());
-      } else {
-        far = far_points(mesh, surface, threshold);
-      }
+      if(!surface_tree)
+        surface_tree = std::make_unique<Face_tree<TriangleMesh> >(faces(surface).first, faces(surface).second, surface);
+      const double over_bound = bounds.max_distance * input_diagonal;
+      TriangleMesh next;
+      if(bad < levels.size())
+        Polygon_mesh_processing::polygon_soup_to_polygon_mesh(levels[bad].points, levels[bad].triangles, next);
+      const TriangleMesh& over = bad < levels.size() ? next : mesh;
+      const auto far = far_points(over, surface, *surface_tree, distance_hold_threshold * over_bound);
       spots.insert(spots.end(), far.begin(), far.end());
+      if(&over != &mesh) {
+        const auto farther = far_points(mesh, surface, *surface_tree, over_bound);
+        spots.insert(spots.end(), farther.begin(), farther.end());
+      }
     }
     clear(mesh);
     Polygon_mesh_processing::polygon_soup_to_polygon_mesh(levels[good].points, levels[good].triangles, mesh);

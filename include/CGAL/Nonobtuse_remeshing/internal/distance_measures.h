@@ -14,6 +14,7 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Kernel/global_functions.h>
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -29,6 +30,13 @@
 namespace CGAL {
 namespace Nonobtuse_remeshing {
 namespace internal {
+
+// An AABB tree of the faces of `TriangleMesh`, in the kernel of its points.
+template <typename TriangleMesh>
+using Face_tree = AABB_tree<AABB_traits<
+    typename Kernel_traits<typename boost::property_traits<
+        typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type>::Kernel,
+    AABB_face_graph_triangle_primitive<TriangleMesh> > >;
 
 // Area-weighted mean distance from `mesh` to the triangles in `tree`: each
 // face is integrated with the degree-3 rule that weighs the vertices 1/20,
@@ -70,10 +78,6 @@ template <typename Report, typename TriangleMesh>
 Report distance_report(const TriangleMesh& mesh, const TriangleMesh& reference, double relative_error)
 {
   namespace PMP = Polygon_mesh_processing;
-  using Primitive = AABB_face_graph_triangle_primitive<TriangleMesh>;
-  using Traits = AABB_traits<typename Kernel_traits<typename boost::property_traits<
-      typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type>::Kernel,
-      Primitive>;
 
   Report r;
   r.reference_diagonal = bbox_diagonal(reference);
@@ -89,12 +93,12 @@ Report distance_report(const TriangleMesh& mesh, const TriangleMesh& reference, 
     r.hausdorff_from_reference = scale * PMP::bounded_error_Hausdorff_distance<Sequential_tag>(reference, mesh, error);
   };
   const auto mean_to = [&] {
-    AABB_tree<Traits> to_reference(faces(reference).first, faces(reference).second, reference);
+    Face_tree<TriangleMesh> to_reference(faces(reference).first, faces(reference).second, reference);
     to_reference.accelerate_distance_queries();
     r.mean_to_reference = scale * mean_distance(mesh, to_reference);
   };
   const auto mean_from = [&] {
-    AABB_tree<Traits> to_mesh(faces(mesh).first, faces(mesh).second, mesh);
+    Face_tree<TriangleMesh> to_mesh(faces(mesh).first, faces(mesh).second, mesh);
     to_mesh.accelerate_distance_queries();
     r.mean_from_reference = scale * mean_distance(reference, to_mesh);
   };
