@@ -250,6 +250,8 @@ int remesh_command(int argc, char** argv)
                        "fitted again)")
     ("no-stuck-vertices", "fit: do not free the vertices left farthest from the input by moving each together "
                           "with its one-ring")
+    ("no-distance-balance", "fit: leave the vertices on the input instead of moving them along their normals "
+                            "until the mesh straddles it")
     ("threads", po::value<int>(&decimation.threads)->default_value(0),
      "threads of the fit and of the levels' relaxation (0: one per core); the result is the same for any "
      "number")
@@ -380,6 +382,7 @@ int remesh_command(int argc, char** argv)
               NR::parameters::distance_guard(vm.count("no-distance-guard") == 0),
               NR::parameters::fill_border_notches(vm.count("no-border-fill") == 0),
               NR::parameters::free_stuck_vertices(vm.count("no-stuck-vertices") == 0),
+              NR::parameters::balance_distance(vm.count("no-distance-balance") == 0),
               NR::parameters::number_of_threads(decimation.threads),
               NR::parameters::remeshing_visitor(std::ref(progress)),
               NR::parameters::memory_budget(memory_limit * 1024. * 1024. * 1024.)));

@@ -57,8 +57,9 @@ struct Decimation_level
 /// rounds under a rising cost ceiling and deform-to-fit (chapter 5) fits the
 /// decimated mesh to the full one between rounds: on a fitted nonobtuse mesh
 /// most edges soon have an empty F(u, v), and the thesis's single greedy run
-/// stalls near 40% of the vertices removed (see the manual). Every fitting
-/// move is certified too.
+/// stalls near 40% of the vertices removed (see the manual). The relaxation
+/// ends with the fit's distance balance (`deform_to_fit()`), unmeasured: the
+/// caller measures the levels. Every fitting move is certified too.
 ///
 /// The decimation stops at the target vertex count, when the cheapest
 /// collapse left would place w* farther than `max_error` from the planes and

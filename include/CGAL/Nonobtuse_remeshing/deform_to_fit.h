@@ -111,6 +111,15 @@ Deform_to_fit_statistics deform_to_fit_with(TriangleMesh& mesh, VertexPointMap v
 /// from before the first pass is finished too and the closer one kept
 /// (`stuck_vertices_undone` when that is the one before the passes).
 ///
+/// With its vertices on the input, every face of a curved region lies on one
+/// side of it, by up to its sagitta. After the guard, the distance balance
+/// (`balance_distance`) moves every interior vertex along its normal by the
+/// middle of the range of the input's offsets seen from the vertex and from
+/// its faces' centroids, so that the mesh straddles the input, certified like
+/// every move, in at most three rounds kept only if they make no face pair
+/// cross and, with the guard, neither its measure nor the farthest face
+/// centroid grows (`balance_moves`).
+///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{alpha} weight of the distance term D, in [0, 1]; default 0.5
 ///     \cgalParamType{`double`} \cgalParamNEnd
@@ -141,6 +150,8 @@ Deform_to_fit_statistics deform_to_fit_with(TriangleMesh& mesh, VertexPointMap v
 ///   \cgalParamNBegin{fill_border_notches} fills the notches of the borders, and the corners of the input's border they cut off, with faces that bring them out to the input's border (beyond the thesis); default true
 ///     \cgalParamType{`bool`} \cgalParamNEnd
 ///   \cgalParamNBegin{free_stuck_vertices} moves the vertices left farthest from the input together with their one-rings (beyond the thesis); default true
+///     \cgalParamType{`bool`} \cgalParamNEnd
+///   \cgalParamNBegin{balance_distance} moves the vertices along their normals until the mesh straddles the input (beyond the thesis); default true
 ///     \cgalParamType{`bool`} \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads} threads that move vertices sharing no edge at the same
 ///     time (oneTBB; without it, one); 0 for one per core; the result is the same, bit for bit,

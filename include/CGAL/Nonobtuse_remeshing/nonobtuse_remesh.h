@@ -97,7 +97,8 @@ namespace Nonobtuse_remeshing {
 ///     \cgalParamType{`Remeshing_stage`} \cgalParamNEnd
 ///   \cgalParamNBegin{alpha, drum_subdivisions, quadric_rings, smoothing_steps, fit_tolerance,
 ///     max_moves, max_seconds, lazy_evaluation, early_smoothing, tangential_smoothing,
-///     attract_features, distance_guard, fill_border_notches, free_stuck_vertices, number_of_threads} see `deform_to_fit()` (the drum subdivisions serve the valence stage
+///     attract_features, distance_guard, fill_border_notches, free_stuck_vertices, balance_distance,
+///     number_of_threads} see `deform_to_fit()` (the drum subdivisions serve the valence stage
 ///     too) \cgalParamNEnd
 ///   \cgalParamNBegin{min_interior_valence, min_border_valence, max_error, relaxation} of the
 ///     decimation, see `angle_bounded_decimation()`, except that `max_error` defaults to one cube of

@@ -47,6 +47,7 @@ namespace internal_np {
   X(distance_guard_t, distance_guard)     /* the fit ends no farther */         \
   X(fill_border_notches_t, fill_border_notches) /* border staircases filled */  \
   X(free_stuck_vertices_t, free_stuck_vertices) /* moved with their rings */    \
+  X(balance_distance_t, balance_distance) /* the mesh straddles the input */    \
   X(fit_visitor_t, fit_visitor)           /* progress and cancellation */      \
   X(vertex_split_t, vertex_split)         /* splits after removal */        \
   X(target_vertices_t, target_vertices)   /* vertices of the result */       \

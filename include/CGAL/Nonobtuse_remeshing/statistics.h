@@ -102,6 +102,7 @@ struct Deform_to_fit_statistics
   bool border_fills_undone = false;       ///< fills were made, but the fit ended farther with them than without: removed
   std::size_t stuck_vertices_freed = 0;   ///< vertices far from the input moved closer together with their one-ring
   bool stuck_vertices_undone = false;     ///< the guard could not end the fit as close as its start after that: undone
+  std::size_t balance_moves = 0;          ///< moves along the normals that make the mesh straddle the input
   double rms_distance = 0.;           ///< root mean square distance of the vertices to the input,
                                       ///< in % of the input's bounding-box diagonal (updated per phase)
   bool budget_exhausted = false;
@@ -110,6 +111,7 @@ struct Deform_to_fit_statistics
   double smoothing_seconds = 0.;
   double untangling_seconds = 0.;
   double guard_seconds = 0.;
+  double balance_seconds = 0.;
   double seconds = 0.;
 };
 
@@ -241,6 +243,7 @@ void for_each_field(const Deform_to_fit_statistics& s, F&& f)
   f("border_fills_undone", s.border_fills_undone);
   f("stuck_vertices_freed", s.stuck_vertices_freed);
   f("stuck_vertices_undone", s.stuck_vertices_undone);
+  f("balance_moves", s.balance_moves);
   f("rms_vertex_distance_percent", s.rms_distance);
   f("budget_exhausted", s.budget_exhausted);
   f("cancelled", s.cancelled);
@@ -248,6 +251,7 @@ void for_each_field(const Deform_to_fit_statistics& s, F&& f)
   f("smoothing_seconds", s.smoothing_seconds);
   f("untangling_seconds", s.untangling_seconds);
   f("guard_seconds", s.guard_seconds);
+  f("balance_seconds", s.balance_seconds);
   f("seconds", s.seconds);
 }
 

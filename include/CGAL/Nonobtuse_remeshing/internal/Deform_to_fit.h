@@ -13,6 +13,7 @@
 #include <CGAL/Nonobtuse_remeshing/internal/angle_predicates.h>
 #include <CGAL/Nonobtuse_remeshing/internal/border_notches.h>
 #include <CGAL/Nonobtuse_remeshing/internal/closest_triangle.h>
+#include <CGAL/Nonobtuse_remeshing/internal/distance_balance.h>
 #include <CGAL/Nonobtuse_remeshing/internal/distance_guard.h>
 #include <CGAL/Nonobtuse_remeshing/internal/epick_points.h>
 #include <CGAL/Nonobtuse_remeshing/internal/feasible_region.h>
@@ -62,6 +63,7 @@ struct Deform_to_fit_options
   bool distance_guard = true;
   bool fill_border_notches = true;
   bool free_stuck_vertices = true;
+  bool balance_distance = true;
   int threads = 0;  // 0: one per core
 };
 
@@ -88,6 +90,7 @@ Deform_to_fit_options deform_to_fit_options(const NamedParameters& np, int& ring
       choose_parameter(get_parameter(np, internal_np::fill_border_notches), o.fill_border_notches);
   o.free_stuck_vertices =
       choose_parameter(get_parameter(np, internal_np::free_stuck_vertices), o.free_stuck_vertices);
+  o.balance_distance = choose_parameter(get_parameter(np, internal_np::balance_distance), o.balance_distance);
   o.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), o.threads);
   rings = choose_parameter(get_parameter(np, internal_np::quadric_rings), 0);
   if(o.threads < 0) throw Bad_parameter("the number of threads must be at least 0 (0: one per core)");
@@ -875,12 +878,15 @@ private:
 
   // Beyond the thesis: the untangling (untangling.h), then the distance
   // guard (distance_guard.h), which goes on from the pairs the untangling
-  // left.
+  // left, then the distance balance (distance_balance.h), from the pairs
+  // the guard left.
   void untangle_and_guard()
   {
     Face_pairs pairs = internal::untangle(*this);
     if(options_.distance_guard && !stats_.budget_exhausted && !stats_.cancelled)
-      internal::guard_the_distance(*this, std::move(pairs));
+      pairs = internal::guard_the_distance(*this, std::move(pairs));
+    if(options_.balance_distance && !stats_.budget_exhausted && !stats_.cancelled)
+      internal::balance_the_distance(*this, std::move(pairs));
   }
   template <typename Fit>
   friend typename Fit::Face_pairs untangle(Fit& fit);
@@ -962,7 +968,16 @@ private:
   template <typename Fit>
   friend double guard_distance(Fit& fit, double limit, Vertex_list* far);
   template <typename Fit>
-  friend void guard_the_distance(Fit& fit, typename Fit::Face_pairs pairs);
+  friend typename Fit::Face_pairs guard_the_distance(Fit& fit, typename Fit::Face_pairs pairs);
+
+  // Beyond the thesis: distance_balance.h.
+  template <typename Fit>
+  friend struct Face_offsets;
+  template <typename Fit>
+  friend bool balanced_position(const Fit& fit, const Face_offsets<Fit>& offsets, std::size_t i,
+                                Eigen::Vector3d& position);
+  template <typename Fit>
+  friend void balance_the_distance(Fit& fit, typename Fit::Face_pairs pairs);
 
   void update_rms_distance()
   {
