@@ -116,9 +116,9 @@ Deform_to_fit_statistics deform_to_fit_with(TriangleMesh& mesh, VertexPointMap v
 /// (`balance_distance`) moves every interior vertex along its normal by the
 /// middle of the range of the input's offsets seen from the vertex and from
 /// its faces' centroids, so that the mesh straddles the input, certified like
-/// every move, in at most three rounds kept only if they make no face pair
-/// cross and, with the guard, neither its measure nor the farthest face
-/// centroid grows (`balance_moves`).
+/// every move, in three rounds kept only if they make no face pair cross
+/// and, with the guard, neither its measure nor the farthest face centroid
+/// grows (else run once more with half the steps; `balance_moves`).
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{alpha} weight of the distance term D, in [0, 1]; default 0.5

@@ -8,9 +8,9 @@
 // s/2. Each vertex moves along its normal by the middle of the range of the
 // input's offsets seen from it and from the centroids of its faces, certified
 // exactly like any move of the optimizer (Deform_to_fit.h), whose friend
-// this function is; a round is kept only if the distance, as the guard
-// measures it and at the faces' centroids, does not grow and no face pair
-// starts to cross.
+// these functions are; three rounds, kept only if no face pair starts to
+// cross and, with the distance guard, the distance, as the guard measures
+// it and at the faces' centroids, does not grow.
 
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_DISTANCE_BALANCE_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_DISTANCE_BALANCE_H
