@@ -37,6 +37,7 @@
 #include <chrono>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <cmath>
 #include <queue>
 #include <stdexcept>
@@ -883,10 +884,14 @@ private:
   void untangle_and_guard()
   {
     Face_pairs pairs = internal::untangle(*this);
-    if(options_.distance_guard && !stats_.budget_exhausted && !stats_.cancelled)
-      pairs = internal::guard_the_distance(*this, std::move(pairs));
+    std::optional<double> guarded;  // the guard's measure of the mesh, when it ran
+    if(options_.distance_guard && !stats_.budget_exhausted && !stats_.cancelled) {
+      internal::Guard_outcome<Deform_to_fit> outcome = internal::guard_the_distance(*this, std::move(pairs));
+      pairs = std::move(outcome.pairs);
+      guarded = outcome.distance;
+    }
     if(options_.balance_distance && !stats_.budget_exhausted && !stats_.cancelled)
-      internal::balance_the_distance(*this, std::move(pairs));
+      internal::balance_the_distance(*this, std::move(pairs), guarded);
   }
   template <typename Fit>
   friend typename Fit::Face_pairs untangle(Fit& fit);
@@ -968,7 +973,7 @@ private:
   template <typename Fit>
   friend double guard_distance(Fit& fit, double limit, Vertex_list* far);
   template <typename Fit>
-  friend typename Fit::Face_pairs guard_the_distance(Fit& fit, typename Fit::Face_pairs pairs);
+  friend Guard_outcome<Fit> guard_the_distance(Fit& fit, typename Fit::Face_pairs pairs);
 
   // Beyond the thesis: distance_balance.h.
   template <typename Fit>
@@ -977,7 +982,7 @@ private:
   friend bool balanced_position(const Fit& fit, const Face_offsets<Fit>& offsets, std::size_t i,
                                 Eigen::Vector3d& position);
   template <typename Fit>
-  friend void balance_the_distance(Fit& fit, typename Fit::Face_pairs pairs);
+  friend void balance_the_distance(Fit& fit, typename Fit::Face_pairs pairs, std::optional<double> guarded);
 
   void update_rms_distance()
   {

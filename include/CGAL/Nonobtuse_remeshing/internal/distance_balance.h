@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -120,32 +121,32 @@ bool balanced_position(const Fit& fit, const Face_offsets<Fit>& offsets, std::si
 // Three rounds of balancing moves, each from the offsets measured after the
 // one before, from the face pairs `pairs` that cross (those the untangling
 // and the guard left). The rounds are kept when no face pair starts to cross
-// and, with the distance guard, when the larger of the guard's measure and
-// the farthest face centroid does not grow and the guard's measure stays
-// within its start (the guard's promise); otherwise they are rolled back
-// and run once more with half the steps. Without the guard (the
-// decimation's relaxation, whose levels are measured by the caller), the
-// distance is not measured.
+// and, with the distance guard (`guarded`: its measure of the mesh as the
+// guard left it), when the larger of the guard's measure and the farthest
+// face centroid does not grow and the guard's measure stays within its
+// start (the guard's promise); otherwise they are rolled back and run once
+// more with half the steps. Without the guard (the decimation's relaxation,
+// whose levels are measured by the caller), the distance is not measured.
 template <typename Fit>
-void balance_the_distance(Fit& fit, typename Fit::Face_pairs pairs)
+void balance_the_distance(Fit& fit, typename Fit::Face_pairs pairs, std::optional<double> guarded)
 {
   const auto start = std::chrono::steady_clock::now();
   const std::size_t n = fit.vertices_.size();
-  const bool guarded = fit.options_.distance_guard;
   const double promise = (std::max)(fit.stats_.start_distance, fit.stats_.end_distance) * fit.diagonal_ / 100.;
   Face_offsets<Fit> offsets(fit);
-  const double guard = guarded ? guard_distance(fit, 0., nullptr) : 0.;
-  const double farthest = offsets.measure(fit), distance = (std::max)(guard, farthest);
+  const double farthest = offsets.measure(fit), distance = (std::max)(guarded.value_or(0.), farthest);
+  const std::vector<Eigen::Vector3d> start_centroid = offsets.centroid, start_closest = offsets.closest;
   std::vector<std::size_t> all(n);
   for(std::size_t i = 0; i < n; ++i) all[i] = i;
   const Saved_region<Fit> saved(fit, all);
   std::vector<Eigen::Vector3d> targets(n);
   std::vector<char> movable(n), moved(n), step(n);
+  constexpr int rounds = 3;
   for(double scale : {1., 0.5}) {
     std::size_t moves = 0;
     double after = farthest;
     std::fill(moved.begin(), moved.end(), 0);
-    for(int round = 0; round < 3 && !fit.stopped(); ++round) {
+    for(int round = 0; round < rounds && !fit.stopped(); ++round) {
       fit.pool_.for_each(n, [&](std::size_t i, int) {
         movable[i] = balanced_position(fit, offsets, i, targets[i]);
         if(movable[i]) targets[i] = fit.position(i) + scale * (targets[i] - fit.position(i));
@@ -167,7 +168,8 @@ void balance_the_distance(Fit& fit, typename Fit::Face_pairs pairs)
       }
       if(round_moves == 0) break;
       moves += round_moves;
-      after = offsets.measure(fit);
+      // the next round's offsets; after the last, the guard's check needs them
+      if(guarded || round + 1 < rounds) after = offsets.measure(fit);
     }
     if(moves == 0) break;
     std::vector<std::size_t> list;
@@ -177,8 +179,9 @@ void balance_the_distance(Fit& fit, typename Fit::Face_pairs pairs)
     bool keep = after_pairs.size() <= pairs.size();
     double guard_after = 0.;
     if(keep && guarded) {
-      guard_after = guard_distance(fit, 0., nullptr);
-      keep = (std::max)(guard_after, after) <= distance && guard_after <= (std::max)(guard, promise);
+      // an infinite limit: only the farthest points are asked again without a start face
+      guard_after = guard_distance(fit, std::numeric_limits<double>::infinity(), nullptr);
+      keep = (std::max)(guard_after, after) <= distance && guard_after <= (std::max)(*guarded, promise);
     }
     if(keep) {
       pairs.swap(after_pairs);
@@ -188,7 +191,8 @@ void balance_the_distance(Fit& fit, typename Fit::Face_pairs pairs)
       break;
     }
     saved.restore(fit);
-    offsets.measure(fit);
+    offsets.centroid = start_centroid;
+    offsets.closest = start_closest;
   }
   fit.stats_.intersecting_pairs = pairs.size();
   fit.stats_.balance_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
