@@ -107,7 +107,7 @@ public:
     // The kept samples: their owner did not move, so it stays unless a moved
     // vertex comes as near (none after a rebuild, which searches them all).
     std::vector<bool> kept(samples_.size(), false);
-    if(!rebuild) update_kept_samples(points, kept);
+    if(!rebuild) update_kept_samples(points, kept, pool);
     pool.for_each(samples_.size(), [&](std::size_t s, int) {
       if(kept[s]) return;
       nearest_[s] = none;
@@ -148,10 +148,15 @@ private:
   // the moved vertices (the lowest index among equally near ones): a
   // moved vertex searches the samples within the farthest kept owner's
   // distance of its group.
-  void update_kept_samples(const std::vector<Point>& points, std::vector<bool>& kept)
+  template <typename Pool>
+  void update_kept_samples(const std::vector<Point>& points, std::vector<bool>& kept, Pool& pool)
   {
     std::vector<bool> moved(points.size());
-    for(std::size_t i = 0; i < points.size(); ++i) moved[i] = !(points[i] == last_[i]);
+    std::vector<std::size_t> movers;
+    for(std::size_t i = 0; i < points.size(); ++i) {
+      moved[i] = !(points[i] == last_[i]);
+      if(moved[i]) movers.push_back(i);
+    }
     double farthest[2] = {-1., -1.};  // squared, per group (off and on the border); -1: no kept sample
     for(std::size_t s = 0; s < samples_.size(); ++s)
       if(nearest_[s] != points.size() && !moved[nearest_[s]]) {
@@ -159,24 +164,28 @@ private:
         double& f = farthest[samples_[s].second ? 1 : 0];
         f = (std::max)(f, squared_[s]);
       }
-    std::vector<std::size_t> found;
-    for(std::size_t c = 0; c < points.size(); ++c) {
-      if(!moved[c]) continue;
+    // the searches on the workers, the hand-overs in the movers' order (a
+    // sample goes to the nearest, the lowest index among equally near ones,
+    // whatever the order)
+    std::vector<std::vector<std::pair<std::size_t, double> > > near(movers.size());
+    pool.for_each(movers.size(), [&](std::size_t j, int) {
+      const std::size_t c = movers[j];
+      std::vector<std::size_t> found;
       for(int g = 0; g < 2; ++g) {
         if(farthest[g] < 0. || (g == 1 && !on_border_[c])) continue;  // border samples: border vertices only
         found.clear();
         const double radius = std::sqrt(farthest[g]) * (1. + 1e-9) + 1e-300;
         sample_trees_[g]->search(std::back_inserter(found), Sphere(points[c], radius, 0., Adapter(sample_map_)));
-        for(std::size_t s : found) {
-          if(!kept[s]) continue;
-          const double d = CGAL::squared_distance(points[c], samples_[s].first);
-          if(d < squared_[s] || (d == squared_[s] && c < nearest_[s])) {
-            nearest_[s] = c;
-            squared_[s] = d;
-          }
-        }
+        for(std::size_t s : found)
+          if(kept[s]) near[j].emplace_back(s, CGAL::squared_distance(points[c], samples_[s].first));
       }
-    }
+    });
+    for(std::size_t j = 0; j < movers.size(); ++j)
+      for(const auto& [s, d] : near[j])
+        if(d < squared_[s] || (d == squared_[s] && movers[j] < nearest_[s])) {
+          nearest_[s] = movers[j];
+          squared_[s] = d;
+        }
   }
 
   template <typename Pool>
