@@ -170,6 +170,15 @@ double guard_distance(Fit& fit, double limit, Vertex_list* far)
   return (std::max)(from_input, mesh_side(fit, limit, far));
 }
 
+// What guard_the_distance leaves: the self-intersecting face pairs, and its
+// measure (guard_distance) of the mesh as it ends.
+template <typename Fit>
+struct Guard_outcome
+{
+  typename Fit::Face_pairs pairs;
+  double distance;
+};
+
 // Where the fitted mesh is farther from the input than the mesh it started
 // from (as guard_distance measures both), the vertices near the excess and
 // the rings around them, wider each round, move back towards their start
@@ -182,13 +191,6 @@ double guard_distance(Fit& fit, double limit, Vertex_list* far)
 // and 100): three passes and five rounds brought the guard's measure from
 // 1.91% only to 1.54%, the start being 1.43%; ten passes and eight rounds
 // reach 1.43% in six.
-template <typename Fit>
-struct Guard_outcome
-{
-  typename Fit::Face_pairs pairs;
-  double distance;
-};
-
 template <typename Fit>
 Guard_outcome<Fit> guard_the_distance(Fit& fit, typename Fit::Face_pairs pairs)
 {
