@@ -11,6 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -24,22 +26,20 @@
 #include <unistd.h>
 
 namespace NR = CGAL::Nonobtuse_remeshing;
-using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
 
 namespace {
 
-struct Outcome
+using nonobtuse_test::data;
+using nonobtuse_test::lines;
+using nonobtuse_test::Mesh;
+using nonobtuse_test::slurp;
+
+struct Cli_outcome
 {
   int code;
   std::string out;  // standard output
   std::string err;  // standard error
 };
-
-std::string slurp(const std::string& path)
-{
-  std::ifstream in(path);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 std::string scratch()
 {
@@ -50,7 +50,7 @@ std::string scratch()
   return folder;
 }
 
-Outcome run(const std::string& arguments)
+Cli_outcome run(const std::string& arguments)
 {
   const std::string folder = scratch();
   const std::string command = std::string(NONOBTUSE_TOOL) + " " + arguments + " >" + folder +
@@ -60,14 +60,7 @@ Outcome run(const std::string& arguments)
           slurp(folder + "/err.txt")};
 }
 
-std::string data(const std::string& name) { return std::string(NONOBTUSE_TEST_DATA) + "/" + name; }
-
 bool exists(const std::string& path) { return ::access(path.c_str(), F_OK) == 0; }
-
-std::size_t lines(const std::string& text)
-{
-  return std::count(text.begin(), text.end(), '\n');
-}
 
 } // namespace
 
@@ -75,7 +68,7 @@ TEST(Cli, HelpForTheToolAndEverySubcommand)
 {
   for(const std::string& args :
       std::vector<std::string>{"--help", "certify --help", "report --help", "remesh --help", "decimate --help"}) {
-    const Outcome r = run(args);
+    const Cli_outcome r = run(args);
     EXPECT_EQ(r.code, 0) << args;
     EXPECT_NE(r.out.find("usage: nonobtuse-remesh"), std::string::npos) << args;
   }
@@ -87,7 +80,7 @@ TEST(Cli, UsageErrorsExitTwo)
                                  "certify --min-angle abc " + data("sphere.off"),
                                  "certify --min-angle 95 " + data("sphere.off"),
                                  "report --no-such-option " + data("sphere.off")}) {
-    const Outcome r = run(args);
+    const Cli_outcome r = run(args);
     EXPECT_EQ(r.code, 2) << args << ": " << r.err;
     EXPECT_FALSE(r.err.empty()) << args;
   }
@@ -95,10 +88,10 @@ TEST(Cli, UsageErrorsExitTwo)
 
 TEST(Cli, CertifyExitCodes)
 {
-  const Outcome cube = run("certify " + data("cube-meshed.off"));
+  const Cli_outcome cube = run("certify " + data("cube-meshed.off"));
   EXPECT_EQ(cube.code, 0) << cube.err;
   EXPECT_NE(cube.out.find("certified: yes"), std::string::npos);
-  const Outcome pig = run("certify " + data("pig.off"));
+  const Cli_outcome pig = run("certify " + data("pig.off"));
   EXPECT_EQ(pig.code, 1);
   EXPECT_NE(pig.out.find("certified: no"), std::string::npos);
   // sphere.off has angles from 51.2 to 71.2 degrees
@@ -126,7 +119,7 @@ TEST(Cli, BadInputIsOneLineExitThreeAndNoOutputFile)
   };
   for(const auto& c : cases) {
     const std::string json = folder + "/report.json";
-    const Outcome r = run("report " + c[0] + " --json " + json);
+    const Cli_outcome r = run("report " + c[0] + " --json " + json);
     EXPECT_EQ(r.code, 3) << c[0] << ": " << r.err;
     EXPECT_EQ(lines(r.err), 1u) << r.err;
     EXPECT_NE(r.err.find(c[1]), std::string::npos) << r.err;
@@ -137,7 +130,7 @@ TEST(Cli, BadInputIsOneLineExitThreeAndNoOutputFile)
 
 TEST(Cli, UnwritableOutputIsRefusedBeforeAnyWork)
 {
-  const Outcome r = run("report " + data("sphere.off") + " --json /nonexistent-folder/report.json");
+  const Cli_outcome r = run("report " + data("sphere.off") + " --json /nonexistent-folder/report.json");
   EXPECT_EQ(r.code, 3);
   EXPECT_EQ(lines(r.err), 1u) << r.err;
   EXPECT_NE(r.err.find("/nonexistent-folder/"), std::string::npos);
@@ -148,7 +141,7 @@ TEST(Cli, OutputOverAFolderOrTheInputIsRefused)
 {
   const std::string folder = scratch();
   ::mkdir((folder + "/taken.json").c_str(), 0755);
-  Outcome r = run("report " + data("sphere.off") + " --json " + folder + "/taken.json");
+  Cli_outcome r = run("report " + data("sphere.off") + " --json " + folder + "/taken.json");
   EXPECT_EQ(r.code, 3);
   EXPECT_NE(r.err.find("it is a folder"), std::string::npos) << r.err;
   EXPECT_TRUE(r.out.empty());
@@ -164,7 +157,7 @@ TEST(Cli, RepairsAreAnnounced)
 {
   const std::string folder = scratch();
   std::ofstream(folder + "/quad.off") << "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
-  const Outcome quad = run("report " + folder + "/quad.off");
+  const Cli_outcome quad = run("report " + folder + "/quad.off");
   EXPECT_EQ(quad.code, 0) << quad.err;  // two 45-45-90 triangles
   EXPECT_NE(quad.err.find("note:"), std::string::npos);
   EXPECT_NE(quad.err.find("triangulated 1 non-triangle face"), std::string::npos);
@@ -176,7 +169,7 @@ TEST(Cli, RepairsAreAnnounced)
   std::ofstream(folder + "/pinched.off")
       << "OFF\n7 8 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n-1 0 0\n0 -1 0\n0 0 -1\n"
          "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n3 0 4 5\n3 0 6 4\n3 0 5 6\n3 4 6 5\n";
-  const Outcome pinched = run("report " + folder + "/pinched.off --json " + folder + "/p.json");
+  const Cli_outcome pinched = run("report " + folder + "/pinched.off --json " + folder + "/p.json");
   EXPECT_EQ(pinched.code, 0) << pinched.err;
   EXPECT_NE(pinched.err.find("orient_polygon_soup, 1 vertex(es) duplicated"), std::string::npos)
       << pinched.err;
@@ -190,7 +183,7 @@ TEST(Cli, JsonReportAgreesWithTheLibrary)
 {
   const std::string folder = scratch();
   const std::string json = folder + "/pig.json";
-  const Outcome r = run("report " + data("pig.off") + " --reference " + data("pig.off") + " --json " + json);
+  const Cli_outcome r = run("report " + data("pig.off") + " --reference " + data("pig.off") + " --json " + json);
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(slurp(json));
 
@@ -217,7 +210,7 @@ TEST(Cli, RemeshWritesACertifiedMesh)
 {
   const std::string folder = scratch();
   const std::string out = folder + "/sphere-init.off", json = folder + "/init.json";
-  const Outcome r = run("remesh " + data("sphere.off") + " -o " + out + " --resolution 30 --stop-after init --report " + json);
+  const Cli_outcome r = run("remesh " + data("sphere.off") + " -o " + out + " --resolution 30 --stop-after init --report " + json);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("certified in [30, 90] degrees on the written file"), std::string::npos);
   Mesh mesh;
@@ -245,7 +238,7 @@ TEST(Cli, SelfIntersectingInputComesOutClosed)
   const std::string folder = scratch();
   for(const std::string signs : {"auto", "patches"}) {
     const std::string out = folder + "/cow-" + signs + ".off", json = folder + "/cow-" + signs + ".json";
-    const Outcome r = run("remesh " + data("cow.off") + " -o " + out + " -N 100 --stop-after init -q --signs " + signs +
+    const Cli_outcome r = run("remesh " + data("cow.off") + " -o " + out + " -N 100 --stop-after init -q --signs " + signs +
                           (signs == "patches" ? " --topology ignore" : "") + " --report " + json);
     ASSERT_EQ(r.code, 0) << r.err;
     Mesh mesh;
@@ -282,7 +275,7 @@ TEST(Cli, MaxDistanceIsMeasuredOnTheWrittenFile)
 {
   const std::string folder = scratch();
   const std::string out = folder + "/elephant.off", json = folder + "/elephant.json";
-  const Outcome r = run("remesh " + data("elephant.off") + " -o " + out + " --max-distance 2 -q --report " + json);
+  const Cli_outcome r = run("remesh " + data("elephant.off") + " -o " + out + " --max-distance 2 -q --report " + json);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("the bound 2% holds"), std::string::npos) << r.out;
   Mesh mesh, input;
@@ -300,7 +293,7 @@ TEST(Cli, MaxDistanceIsMeasuredOnTheWrittenFile)
   EXPECT_LT(mesh.number_of_vertices(), j["fit"]["vertices"].get<std::size_t>());
 
   const std::string rotor = folder + "/rotor.off";
-  const Outcome unmet =
+  const Cli_outcome unmet =
       run("remesh " + data("rotor.off") + " -o " + rotor + " --max-distance 5 --max-resolution 1 -q");
   EXPECT_EQ(unmet.code, 5) << unmet.err;
   EXPECT_NE(unmet.err.find("the distance bound 5% is not met"), std::string::npos) << unmet.err;
@@ -310,7 +303,7 @@ TEST(Cli, MaxDistanceIsMeasuredOnTheWrittenFile)
 
   for(const std::string bad : {"--max-distance 0", "--max-distance 101", "--max-distance 1 -V 1000",
                                "--max-distance 1 -N 50", "--max-distance 1 --stop-after init"}) {
-    const Outcome refused = run("remesh " + data("rotor.off") + " -o " + folder + "/refused.off " + bad);
+    const Cli_outcome refused = run("remesh " + data("rotor.off") + " -o " + folder + "/refused.off " + bad);
     EXPECT_EQ(refused.code, 2) << bad << ": " << refused.err;
     EXPECT_FALSE(exists(folder + "/refused.off")) << bad;
   }
@@ -331,7 +324,7 @@ TEST(Cli, TargetVerticesKeepsTheInputTopology)
   for(const std::string name : {"hand", "pig"}) {
     const std::string out = folder + "/" + name + ".off", json = folder + "/" + name + ".json";
     const std::string target = name == "hand" ? "10000" : "3000";
-    const Outcome r = run("remesh " + data(name + ".off") + " -o " + out + " -V " + target + " -q --report " + json);
+    const Cli_outcome r = run("remesh " + data(name + ".off") + " -o " + out + " -V " + target + " -q --report " + json);
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.out.find("topology: the input's"), std::string::npos) << r.out;
     Mesh mesh, input;
@@ -354,7 +347,7 @@ TEST(Cli, TargetVerticesKeepsTheInputTopology)
     }
   }
   const std::string out = folder + "/ignored.off", json = folder + "/ignored.json";
-  const Outcome r = run("remesh " + data("hand.off") + " -o " + out + " -V 10000 --topology ignore -q --report " + json);
+  const Cli_outcome r = run("remesh " + data("hand.off") + " -o " + out + " -V 10000 --topology ignore -q --report " + json);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("topology: differs from the input's in 1 of 1"), std::string::npos) << r.out;
   Mesh mesh;
@@ -377,11 +370,11 @@ TEST(Cli, RemeshFitsByDefault)
   const std::string init = folder + "/init.off", fit = folder + "/fit.ply";
   // pig's grid at N = 40 has 5 borders of its 7: --topology ignore keeps that
   // grid, so that init and fit start from the same mesh
-  const Outcome a = run("remesh " + data("pig.off") + " -o " + init + " -N 40 --topology ignore --stop-after init --report " +
+  const Cli_outcome a = run("remesh " + data("pig.off") + " -o " + init + " -N 40 --topology ignore --stop-after init --report " +
                         folder + "/init.json");
   ASSERT_EQ(a.code, 0) << a.err;
   EXPECT_EQ(a.out.find("fit ("), std::string::npos);
-  const Outcome b = run("remesh " + data("pig.off") + " -o " + fit + " -N 40 --topology ignore --report " + folder +
+  const Cli_outcome b = run("remesh " + data("pig.off") + " -o " + fit + " -N 40 --topology ignore --report " + folder +
                         "/fit.json");
   ASSERT_EQ(b.code, 0) << b.err;
   EXPECT_NE(b.out.find("fit (deform-to-fit"), std::string::npos);
@@ -405,7 +398,7 @@ TEST(Cli, RemeshFitsByDefault)
   EXPECT_LE(5. * df["mean_to_reference"].get<double>(), di["mean_to_reference"].get<double>());
 
   // a budget is honoured and said; --quiet silences the progress line
-  const Outcome c = run("remesh " + data("pig.off") + " -o " + fit + " -N 40 --max-moves 50 --quiet");
+  const Cli_outcome c = run("remesh " + data("pig.off") + " -o " + fit + " -N 40 --max-moves 50 --quiet");
   ASSERT_EQ(c.code, 0) << c.err;
   EXPECT_NE(c.out.find("moves 50,"), std::string::npos) << c.out;
   EXPECT_NE(c.out.find("the budget ran out"), std::string::npos);
@@ -418,7 +411,7 @@ TEST(Cli, RemeshCleansValencesBeforeTheFit)
 {
   const std::string folder = scratch();
   const std::string out = folder + "/valence.off";
-  const Outcome a = run("remesh " + data("mesh_with_border.off") + " -o " + out +
+  const Cli_outcome a = run("remesh " + data("mesh_with_border.off") + " -o " + out +
                         " -N 40 --stop-after valence --report " + folder + "/valence.json");
   ASSERT_EQ(a.code, 0) << a.err;
   EXPECT_NE(a.out.find("valence (bad-valence removal"), std::string::npos);
@@ -433,14 +426,14 @@ TEST(Cli, RemeshCleansValencesBeforeTheFit)
   EXPECT_GT(j["valence"]["splits"].get<std::size_t>(), 0u);
   EXPECT_EQ(j["output_report"]["topology"]["border_cycles"], j["init"]["borders_out"]);
 
-  const Outcome b = run("remesh " + data("mesh_with_border.off") + " -o " + out + " -N 40 --stop-after valence" +
+  const Cli_outcome b = run("remesh " + data("mesh_with_border.off") + " -o " + out + " -N 40 --stop-after valence" +
                         " --no-vertex-split --report " + folder + "/removal.json");
   ASSERT_EQ(b.code, 0) << b.err;
   const auto r = nlohmann::json::parse(slurp(folder + "/removal.json"));
   EXPECT_EQ(r["valence"]["splits"], 0);
   EXPECT_GT(r["valence"]["after"]["total"].get<std::size_t>(), j["valence"]["after"]["total"].get<std::size_t>());
 
-  const Outcome c = run("remesh " + data("mesh_with_border.off") + " -o " + out + " -N 40 --no-valence-cleanup" +
+  const Cli_outcome c = run("remesh " + data("mesh_with_border.off") + " -o " + out + " -N 40 --no-valence-cleanup" +
                         " --max-moves 10 --quiet --report " + folder + "/none.json");
   ASSERT_EQ(c.code, 0) << c.err;
   EXPECT_FALSE(nlohmann::json::parse(slurp(folder + "/none.json")).contains("valence"));
@@ -462,7 +455,7 @@ TEST(Cli, RemeshRefusesBadRequestsWithoutWriting)
   EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + out + " --resolution 0").code, 2);
   EXPECT_EQ(run("remesh " + data("sphere.off") + " -o " + out + " --signs magic").code, 2);
   EXPECT_EQ(run("remesh " + data("sphere.off")).code, 2);  // no output
-  const Outcome open = run("remesh " + data("pig.off") + " -o " + out + " --signs inside-test");
+  const Cli_outcome open = run("remesh " + data("pig.off") + " -o " + out + " --signs inside-test");
   EXPECT_EQ(open.code, 3);
   EXPECT_NE(open.err.find("closed input"), std::string::npos);
   EXPECT_EQ(run("remesh " + folder + "/absent.off -o " + out).code, 3);
@@ -477,7 +470,7 @@ TEST(Cli, DecimateAndLevelsOfDetail)
 {
   const std::string folder = scratch();
   const std::string full = folder + "/sphere.off", json = folder + "/sphere.json";
-  const Outcome r = run("remesh " + data("sphere.off") + " -o " + full + " --resolution 30 --lod 0.5,0.1 -q --report " + json);
+  const Cli_outcome r = run("remesh " + data("sphere.off") + " -o " + full + " --resolution 30 --lod 0.5,0.1 -q --report " + json);
   ASSERT_EQ(r.code, 0) << r.err;
   Mesh mesh;
   NR::read_triangle_mesh(full, mesh);
@@ -500,7 +493,7 @@ TEST(Cli, DecimateAndLevelsOfDetail)
   EXPECT_NE(r.out.find("wrote level 2"), std::string::npos);
 
   const std::string decimated = folder + "/decimated.ply", djson = folder + "/decimated.json";
-  const Outcome d = run("decimate " + full + " -o " + decimated + " --ratio 0.3 -q --json " + djson);
+  const Cli_outcome d = run("decimate " + full + " -o " + decimated + " --ratio 0.3 -q --json " + djson);
   ASSERT_EQ(d.code, 0) << d.err;
   Mesh out;
   NR::read_triangle_mesh(decimated, out);
@@ -519,12 +512,12 @@ TEST(Cli, OneAndTwoThreadsWriteTheSameFiles)
   std::vector<std::string> full, level, decimated;
   for(int threads = 1; threads <= 2; ++threads) {
     const std::string name = folder + "/pig" + std::to_string(threads);
-    const Outcome r = run("remesh " + data("pig.off") + " -o " + name + ".off --resolution 40 --lod 0.3 -q --threads " +
+    const Cli_outcome r = run("remesh " + data("pig.off") + " -o " + name + ".off --resolution 40 --lod 0.3 -q --threads " +
                           std::to_string(threads));
     ASSERT_EQ(r.code, 0) << r.err;
     full.push_back(slurp(name + ".off"));
     level.push_back(slurp(name + "_lod1.off"));
-    const Outcome d = run("decimate " + name + ".off -o " + name + "_decimated.off --ratio 0.5 -q --threads " +
+    const Cli_outcome d = run("decimate " + name + ".off -o " + name + "_decimated.off --ratio 0.5 -q --threads " +
                           std::to_string(threads));
     ASSERT_EQ(d.code, 0) << d.err;
     decimated.push_back(slurp(name + "_decimated.off"));
@@ -537,7 +530,7 @@ TEST(Cli, OneAndTwoThreadsWriteTheSameFiles)
   EXPECT_TRUE(full[0] == full[1]);
   EXPECT_TRUE(level[0] == level[1]);
   EXPECT_TRUE(decimated[0] == decimated[1]);
-  const Outcome bad = run("remesh " + data("sphere.off") + " -o " + folder + "/bad.off --threads -1");
+  const Cli_outcome bad = run("remesh " + data("sphere.off") + " -o " + folder + "/bad.off --threads -1");
   EXPECT_EQ(bad.code, 2);
   EXPECT_FALSE(exists(folder + "/bad.off"));
 }
@@ -549,7 +542,7 @@ TEST(Cli, DecimateRefusesWithoutWriting)
   const std::string folder = scratch();
   const std::string init = folder + "/init.off", out = folder + "/out.off";
   ASSERT_EQ(run("remesh " + data("sphere.off") + " -o " + init + " --resolution 20 --stop-after init").code, 0);
-  const Outcome raw = run("decimate " + data("pig.off") + " -o " + out + " --ratio 0.5");
+  const Cli_outcome raw = run("decimate " + data("pig.off") + " -o " + out + " --ratio 0.5");
   EXPECT_EQ(raw.code, 1);
   EXPECT_EQ(lines(raw.err), 1u) << raw.err;
   EXPECT_NE(raw.err.find("does not certify"), std::string::npos);
@@ -560,7 +553,7 @@ TEST(Cli, DecimateRefusesWithoutWriting)
           "remesh " + data("sphere.off") + " -o " + out + " --lod 0.1,0.5",
           "remesh " + data("sphere.off") + " -o " + out + " --lod 0.5,x",
           "remesh " + data("sphere.off") + " -o " + out + " --lod 0.5 --stop-after init"}) {
-    const Outcome r = run(args);
+    const Cli_outcome r = run(args);
     EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
     EXPECT_EQ(lines(r.err), 1u) << args << "\n" << r.err;
   }
@@ -569,7 +562,7 @@ TEST(Cli, DecimateRefusesWithoutWriting)
   for(const std::string& args : std::vector<std::string>{
           "decimate " + init + " -o " + out + " --ratio 0.5 --json " + out,
           "remesh " + data("sphere.off") + " -o " + out + " --resolution 20 --lod 0.5 --report " + folder + "/out_lod1.off"}) {
-    const Outcome r = run(args);
+    const Cli_outcome r = run(args);
     EXPECT_EQ(r.code, 3) << args << "\n" << r.err;
     EXPECT_EQ(lines(r.err), 1u) << args << "\n" << r.err;
   }
@@ -606,7 +599,7 @@ TEST(Cli, EachExceptionTypeHasItsExitCode)
       {"remesh " + data("sphere.off") + " -o " + folder + "/no/such/folder/out.off", "output error:", 3},
   };
   for(const Case& c : cases) {
-    const Outcome r = run(c.arguments);
+    const Cli_outcome r = run(c.arguments);
     EXPECT_EQ(r.code, c.code) << c.arguments << "\n" << r.err;
     EXPECT_NE(r.err.find(c.kind), std::string::npos) << c.arguments << "\n" << r.err;
     EXPECT_EQ(lines(r.err), 1u) << c.arguments << "\n" << r.err;

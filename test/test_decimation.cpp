@@ -90,7 +90,7 @@ Mesh triangular_grid(int rows, int columns)
 
 // Certifies the whole mesh every 10 calls, and cancels once, at call
 // `cancel_at` (the run must stop then, not only when asked again).
-struct Certifying_visitor
+struct Certifying_decimation_visitor
 {
   const Mesh* mesh = nullptr;
   std::size_t calls = 0, failures = 0, cancel_at = 0, collapses_at_cancel = 0;
@@ -372,7 +372,7 @@ TEST(Decimation, EarlyTerminationAndTheThesisRun)
 TEST(Decimation, CertifiedAtEveryMomentAndCancellable)
 {
   Mesh mesh = fitted("pig.off", 30);
-  Certifying_visitor visitor;
+  Certifying_decimation_visitor visitor;
   visitor.mesh = &mesh;
   visitor.cancel_at = 1500;
   const auto s = NR::angle_bounded_decimation(

@@ -47,11 +47,11 @@ using nonobtuse_test::folder_entries;
 using nonobtuse_test::scratch_folder;
 
 using nonobtuse_test::data;
+using nonobtuse_test::lines;
 using nonobtuse_test::slurp;
 
 void spit(const std::string& path, const std::string& contents) { std::ofstream(path, std::ios::binary) << contents; }
 
-std::size_t lines(const std::string& text) { return std::size_t(std::count(text.begin(), text.end(), '\n')); }
 
 struct Tool_run
 {

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -35,6 +36,12 @@ inline std::string slurp(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// The number of lines of `text` (its newlines).
+inline std::size_t lines(const std::string& text)
+{
+  return std::size_t(std::count(text.begin(), text.end(), '\n'));
 }
 
 inline Mesh load(const std::string& name)
