@@ -41,7 +41,7 @@ bool same_topology(const NR::Quality_report& a, const NR::Quality_report& b)
 
 } // namespace
 
-static int bench(int argc, char** argv)
+int nonobtuse_bench::bench_bad_valence(int argc, char** argv)
 {
   if(argc < 2) {
     std::cerr << "usage: bench_bad_valence [N] mesh.off...\n";
@@ -85,5 +85,3 @@ static int bench(int argc, char** argv)
             << "% gone)\n";
   return 0;
 }
-
-int main(int argc, char** argv) { return nonobtuse_bench::guarded(bench, argc, argv); }

@@ -44,7 +44,7 @@ const char* reason(NR::Decimation_stop_reason r)
 
 } // namespace
 
-static int bench(int argc, char** argv)
+int nonobtuse_bench::bench_decimation(int argc, char** argv)
 {
   int resolution = 100;
   double max_error = 0.;
@@ -100,5 +100,3 @@ static int bench(int argc, char** argv)
   }
   return 0;
 }
-
-int main(int argc, char** argv) { return nonobtuse_bench::guarded(bench, argc, argv); }

@@ -21,7 +21,7 @@
 namespace NR = CGAL::Nonobtuse_remeshing;
 using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
 
-static int bench(int argc, char** argv)
+int nonobtuse_bench::bench_deform_to_fit(int argc, char** argv)
 {
   if(argc < 2) {
     std::cerr << "usage: bench_deform_to_fit [N] mesh.off...\n";
@@ -66,5 +66,3 @@ static int bench(int argc, char** argv)
   }
   return 0;
 }
-
-int main(int argc, char** argv) { return nonobtuse_bench::guarded(bench, argc, argv); }

@@ -55,7 +55,7 @@ void run(const std::string& name, const Mesh& input, int repeat)
 
 } // namespace
 
-static int bench(int argc, char** argv)
+int nonobtuse_bench::bench_marching_cubes(int argc, char** argv)
 {
   int repeat = 3;
   std::vector<std::string> paths;
@@ -82,5 +82,3 @@ static int bench(int argc, char** argv)
   run("subdivided first mesh", fine, repeat);
   return 0;
 }
-
-int main(int argc, char** argv) { return nonobtuse_bench::guarded(bench, argc, argv); }

@@ -22,7 +22,7 @@
 namespace NR = CGAL::Nonobtuse_remeshing;
 using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
 
-static int bench(int argc, char** argv)
+int nonobtuse_bench::bench_small_qp(int argc, char** argv)
 {
   if(argc < 2) {
     std::cerr << "usage: bench_small_qp MESH [RESOLUTION]\n";
@@ -65,5 +65,3 @@ static int bench(int argc, char** argv)
             << "CGAL QP (exact Gmpzf):  " << reference.first * 1e6 << " us per solve\n";
   return 0;
 }
-
-int main(int argc, char** argv) { return nonobtuse_bench::guarded(bench, argc, argv); }

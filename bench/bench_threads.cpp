@@ -28,7 +28,7 @@
 namespace NR = CGAL::Nonobtuse_remeshing;
 using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
 
-static int bench(int argc, char** argv)
+int nonobtuse_bench::bench_threads(int argc, char** argv)
 {
   std::size_t target = 10000;
   int max_threads = 2, repeat = 5;
@@ -86,5 +86,3 @@ static int bench(int argc, char** argv)
             << (m % 2 ? speedups[m / 2] : 0.5 * (speedups[m / 2 - 1] + speedups[m / 2])) << "\n";
   return 0;
 }
-
-int main(int argc, char** argv) { return nonobtuse_bench::guarded(bench, argc, argv); }

@@ -80,7 +80,7 @@ double median(std::vector<double> values)
 
 } // namespace
 
-static int bench(int argc, char** argv)
+int nonobtuse_bench::bench_vs_isotropic(int argc, char** argv)
 {
   int resolution = 100, iterations = 3, threads = 1;
   double oversampling = 1., max_distance = 0.;
@@ -187,5 +187,3 @@ static int bench(int argc, char** argv)
   else std::cout << "median Hausdorff ratio (nonobtuse / isotropic): " << median(distance_ratios) << "\n";
   return 0;
 }
-
-int main(int argc, char** argv) { return nonobtuse_bench::guarded(bench, argc, argv); }
