@@ -196,12 +196,13 @@ TEST(DeformToFit, FillsThatLeaveTheFitFartherAreUndone)
   const Mesh input = nonobtuse_test::load("mesh_with_border.off");
   const Mesh initial = initial_mesh(input, 60);
   Mesh unfilled = initial, undone = initial;
-  // undone, the fit ends as before the fills, which come before the
-  // freeing of stuck vertices
+  // undone, the fit ends as without the fills; both without the freeing of
+  // stuck vertices, whose last pass follows the end of the fit either way
   const NR::Deform_to_fit_statistics without_fill = NR::deform_to_fit(
       unfilled, input,
       NR::parameters::combine(NR::parameters::fill_border_notches(false), NR::parameters::free_stuck_vertices(false)));
-  const NR::Deform_to_fit_statistics with_fill = NR::deform_to_fit(undone, input);
+  const NR::Deform_to_fit_statistics with_fill =
+      NR::deform_to_fit(undone, input, NR::parameters::free_stuck_vertices(false));
   ASSERT_TRUE(with_fill.border_fills_undone);
   EXPECT_EQ(with_fill.border_notches_filled, 0u);
   EXPECT_EQ(with_fill.border_vertices_added, 0u);
@@ -218,7 +219,8 @@ TEST(DeformToFit, FillsThatLeaveTheFitFartherAreUndone)
 }
 
 // A vertex held away from the input by a corner of its one-ring at a bound
-// is freed with its one-ring (stuck_vertices.h): on the initial mesh
+// is freed with its one-ring (stuck_vertices.h), once more after the
+// distance balance: on the initial mesh
 // nonobtuse_remesh() fits for the sample sphere at N = 50, the farthest
 // point of the fitted mesh from the input comes closer than without, on the
 // written file, which certifies, with the same vertices and topology.
@@ -232,10 +234,16 @@ TEST(DeformToFit, FreesStuckVertices)
   const NR::Deform_to_fit_statistics with = NR::deform_to_fit(freed, input, NR::parameters::number_of_threads(2));
   EXPECT_EQ(without.stuck_vertices_freed, 0u);
   ASSERT_GT(with.stuck_vertices_freed, 0u);
+  // the last pass, after the distance balance, acts here too (kept: no new
+  // crossing, the guard's measure not grown)
+  EXPECT_EQ(without.stuck_vertices_freed_last, 0u);
+  EXPECT_GT(with.stuck_vertices_freed_last, 0u);
+  EXPECT_LT(with.stuck_vertices_freed_last, with.stuck_vertices_freed);
   // the passes' parallel rounds: the same points, bit for bit, on one thread
   const NR::Deform_to_fit_statistics on_one =
       NR::deform_to_fit(freed_on_one, input, NR::parameters::number_of_threads(1));
   EXPECT_EQ(on_one.stuck_vertices_freed, with.stuck_vertices_freed);
+  EXPECT_EQ(on_one.stuck_vertices_freed_last, with.stuck_vertices_freed_last);
   EXPECT_TRUE(std::equal(freed.points().begin(), freed.points().end(), freed_on_one.points().begin(),
                          freed_on_one.points().end()));
   const NR::Quality_report a = report(nonobtuse_test::written_and_reread(stuck, "stuck.off"), input);

@@ -880,7 +880,8 @@ private:
   // Beyond the thesis: the untangling (untangling.h), then the distance
   // guard (distance_guard.h), which goes on from the pairs the untangling
   // left, then the distance balance (distance_balance.h), from the pairs
-  // the guard left.
+  // the guard left, then a last pass over the stuck vertices
+  // (stuck_vertices.h), from the pairs the balance left.
   void untangle_and_guard()
   {
     Face_pairs pairs = internal::untangle(*this);
@@ -891,7 +892,9 @@ private:
       guarded = outcome.distance;
     }
     if(options_.balance_distance && !stats_.budget_exhausted && !stats_.cancelled)
-      internal::balance_the_distance(*this, std::move(pairs), guarded);
+      pairs = internal::balance_the_distance(*this, std::move(pairs), guarded);
+    if(options_.free_stuck_vertices && !stats_.budget_exhausted && !stats_.cancelled)
+      internal::free_stuck_vertices_last(*this, pairs, guarded.has_value());
   }
   template <typename Fit>
   friend typename Fit::Face_pairs untangle(Fit& fit);
@@ -955,6 +958,8 @@ private:
   template <typename Fit>
   friend bool free_stuck_vertices(Fit& fit);
   template <typename Fit>
+  friend void free_stuck_vertices_last(Fit& fit, const typename Fit::Face_pairs& pairs, bool guarded);
+  template <typename Fit>
   friend std::size_t free_stuck_vertex(Fit& fit, const std::vector<std::size_t>& group,
                                        typename Fit::Workspace& ws);
   template <typename Fit>
@@ -982,7 +987,8 @@ private:
   friend bool balanced_position(const Fit& fit, const Face_offsets<Fit>& offsets, std::size_t i,
                                 Eigen::Vector3d& position);
   template <typename Fit>
-  friend void balance_the_distance(Fit& fit, typename Fit::Face_pairs pairs, std::optional<double> guarded);
+  friend typename Fit::Face_pairs balance_the_distance(Fit& fit, typename Fit::Face_pairs pairs,
+                                                      std::optional<double> guarded);
 
   void update_rms_distance()
   {

@@ -127,8 +127,9 @@ bool balanced_position(const Fit& fit, const Face_offsets<Fit>& offsets, std::si
 // start (the guard's promise); otherwise they are rolled back and run once
 // more with half the steps. Without the guard (the decimation's relaxation,
 // whose levels are measured by the caller), the distance is not measured.
+// Returns the face pairs that cross after it.
 template <typename Fit>
-void balance_the_distance(Fit& fit, typename Fit::Face_pairs pairs, std::optional<double> guarded)
+typename Fit::Face_pairs balance_the_distance(Fit& fit, typename Fit::Face_pairs pairs, std::optional<double> guarded)
 {
   const auto start = std::chrono::steady_clock::now();
   const std::size_t n = fit.vertices_.size();
@@ -196,6 +197,7 @@ void balance_the_distance(Fit& fit, typename Fit::Face_pairs pairs, std::optiona
   }
   fit.stats_.intersecting_pairs = pairs.size();
   fit.stats_.balance_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return pairs;
 }
 
 } // namespace internal

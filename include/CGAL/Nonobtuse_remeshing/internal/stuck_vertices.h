@@ -15,15 +15,18 @@
 // solves its own QP (equation 5.15) over F(u) built around the vertex's new
 // position, three sweeps round the ring, which moves it as little as its
 // objective allows while making room. The group is certified exactly before
-// it is kept, and it is kept only when the farthest of its vertices from the
-// input comes at least 10% closer. These functions are friends of
-// Deform_to_fit (Deform_to_fit.h).
+// it is kept, and it is kept only when the farthest from the input of its
+// vertices and of the centroids and edge midpoints of their faces comes at
+// least 10% closer. A last pass follows the distance balance. These
+// functions are friends of Deform_to_fit (Deform_to_fit.h).
 
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_STUCK_VERTICES_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_STUCK_VERTICES_H
 
+#include <CGAL/Nonobtuse_remeshing/internal/distance_guard.h>
 #include <CGAL/Nonobtuse_remeshing/internal/epick_points.h>
 #include <CGAL/Nonobtuse_remeshing/internal/feasible_region.h>
+#include <CGAL/Nonobtuse_remeshing/internal/untangling.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -33,6 +36,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -69,13 +73,25 @@ double squared_gap(const Fit& fit, std::size_t j, typename Fit::face_descriptor&
 }
 
 // The largest gap among the vertices `group`, with their closest triangles
-// searched again from `hints`.
+// searched again from `hints`, and the largest distance from the input of
+// the centroids and edge midpoints of the faces around them: a group that
+// brings its vertices in can push its faces' interiors out.
 template <typename Fit>
 double farthest_of(const Fit& fit, const std::vector<std::size_t>& group,
                    std::vector<typename Fit::face_descriptor>& hints)
 {
+  using Point = typename Fit::Point;
   double farthest = 0.;
   for(std::size_t j = 0; j < group.size(); ++j) farthest = (std::max)(farthest, squared_gap(fit, group[j], hints[j]));
+  for(std::size_t j = 0; j < group.size(); ++j)
+    for(auto h : halfedges_around_target(fit.vertices_[group[j]], fit.mesh_)) {
+      if(is_border(h, fit.mesh_)) continue;
+      const Point& a = fit.point(target(h, fit.mesh_));
+      const Point& b = fit.point(source(h, fit.mesh_));
+      const Point& c = fit.point(target(next(h, fit.mesh_), fit.mesh_));
+      for(const Point& p : {CGAL::midpoint(a, b), CGAL::midpoint(b, c), CGAL::midpoint(c, a), CGAL::centroid(a, b, c)})
+        farthest = (std::max)(farthest, CGAL::squared_distance(p, fit.input_.triangle(fit.input_.closest(p, hints[j]))));
+    }
   return std::sqrt(farthest);
 }
 
@@ -237,6 +253,51 @@ bool free_stuck_vertices(Fit& fit)
   fit.collect_counters();
   fit.stats_.stuck_vertices_freed += freed;
   return freed > 0;
+}
+
+// The last pass. The passes above run while the queue has work: it resumes
+// after each and can move a freed vertex back out (sphere at 10,000
+// vertices: the same vertex freed in three passes, then back), and the
+// distance balance moves every vertex after them. So once the fit is
+// untangled, guarded and balanced, one more pass frees the vertices left
+// farthest, with nothing after it. It is kept when no face pair crosses but
+// those of `pairs` (the pairs crossing before it) and, with the distance
+// guard (`guarded`), when the guard's measure does not grow; otherwise it is
+// rolled back.
+template <typename Fit>
+void free_stuck_vertices_last(Fit& fit, const typename Fit::Face_pairs& pairs, bool guarded)
+{
+  const std::size_t n = fit.vertices_.size();
+  std::vector<std::size_t> all(n);
+  std::vector<typename Fit::Point> before(n);
+  for(std::size_t i = 0; i < n; ++i) {
+    all[i] = i;
+    before[i] = fit.point(fit.vertices_[i]);
+  }
+  const Saved_region<Fit> saved(fit, all);
+  const std::size_t moves = fit.stats_.moves, freed = fit.stats_.stuck_vertices_freed;
+  fit.stats_.stuck_vertices_freed_last = 0;
+  if(!free_stuck_vertices(fit)) return;
+  std::vector<std::size_t> moved;
+  for(std::size_t i = 0; i < n; ++i)
+    if(fit.point(fit.vertices_[i]) != before[i]) moved.push_back(i);
+  const typename Fit::Face_pairs after = intersecting_pairs_after(fit, moved, pairs);
+  bool keep = after.size() <= pairs.size();
+  double distance = 0.;
+  if(keep && guarded) {
+    // an infinite limit: only the farthest points are asked again without a start face
+    distance = guard_distance(fit, std::numeric_limits<double>::infinity(), nullptr);
+    keep = distance <= fit.stats_.end_distance * fit.diagonal_ / 100.;
+  }
+  if(keep) {
+    if(guarded) fit.stats_.end_distance = 100. * distance / fit.diagonal_;
+    fit.stats_.intersecting_pairs = after.size();
+    fit.stats_.stuck_vertices_freed_last = fit.stats_.stuck_vertices_freed - freed;
+    return;
+  }
+  saved.restore(fit);
+  fit.stats_.moves = moves;
+  fit.stats_.stuck_vertices_freed = freed;
 }
 
 } // namespace internal
