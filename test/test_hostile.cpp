@@ -52,7 +52,6 @@ using nonobtuse_test::slurp;
 
 void spit(const std::string& path, const std::string& contents) { std::ofstream(path, std::ios::binary) << contents; }
 
-
 struct Tool_run
 {
   int code = -1;
