@@ -269,19 +269,12 @@ void free_stuck_vertices_last(Fit& fit, const typename Fit::Face_pairs& pairs, b
 {
   const std::size_t n = fit.vertices_.size();
   std::vector<std::size_t> all(n);
-  std::vector<typename Fit::Point> before(n);
-  for(std::size_t i = 0; i < n; ++i) {
-    all[i] = i;
-    before[i] = fit.point(fit.vertices_[i]);
-  }
+  for(std::size_t i = 0; i < n; ++i) all[i] = i;
   const Saved_region<Fit> saved(fit, all);
   const std::size_t moves = fit.stats_.moves, freed = fit.stats_.stuck_vertices_freed;
   fit.stats_.stuck_vertices_freed_last = 0;
   if(!free_stuck_vertices(fit)) return;
-  std::vector<std::size_t> moved;
-  for(std::size_t i = 0; i < n; ++i)
-    if(fit.point(fit.vertices_[i]) != before[i]) moved.push_back(i);
-  const typename Fit::Face_pairs after = intersecting_pairs_after(fit, moved, pairs);
+  const typename Fit::Face_pairs after = intersecting_pairs_after(fit, saved.moved(fit), pairs);
   bool keep = after.size() <= pairs.size();
   double distance = 0.;
   if(keep && guarded) {

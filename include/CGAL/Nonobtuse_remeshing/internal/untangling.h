@@ -173,6 +173,14 @@ public:
       hints_.push_back(fit.hint_[i]);
     }
   }
+  // The region's vertices whose points differ from the saved ones.
+  std::vector<std::size_t> moved(const Fit& fit) const
+  {
+    std::vector<std::size_t> list;
+    for(std::size_t j = 0; j < region_.size(); ++j)
+      if(fit.point(fit.vertices_[region_[j]]) != points_[j]) list.push_back(region_[j]);
+    return list;
+  }
   void restore(Fit& fit) const
   {
     for(std::size_t j = 0; j < region_.size(); ++j) {
