@@ -920,7 +920,7 @@ private:
   {
     if(!options_.free_stuck_vertices || stuck_passes_ == 4) return false;
     if(stuck_passes_++ == 0 && options_.distance_guard) before_stuck_ = std::make_unique<Fit_state>(*this, false);
-    if(!internal::free_stuck_vertices(*this)) {
+    if(!internal::free_stuck_vertices(*this, 1)) {
       if(stuck_passes_ == 1) before_stuck_.reset();
       stuck_passes_ = 4;
       return false;
@@ -956,7 +956,7 @@ private:
     untangle_and_guard();
   }
   template <typename Fit>
-  friend bool free_stuck_vertices(Fit& fit);
+  friend bool free_stuck_vertices(Fit& fit, std::size_t rings);
   template <typename Fit>
   friend void free_stuck_vertices_last(Fit& fit, const typename Fit::Face_pairs& pairs, bool guarded);
   template <typename Fit>

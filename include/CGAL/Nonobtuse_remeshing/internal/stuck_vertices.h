@@ -17,7 +17,8 @@
 // objective allows while making room. The group is certified exactly before
 // it is kept, and it is kept only when the farthest from the input of its
 // vertices and of the centroids and edge midpoints of their faces comes at
-// least 10% closer. A last pass follows the distance balance. These
+// least 10% closer. A last pass follows the distance balance, and a pass
+// with two rings after it. These
 // functions are friends of Deform_to_fit (Deform_to_fit.h).
 
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_STUCK_VERTICES_H
@@ -170,20 +171,21 @@ std::size_t free_stuck_vertex(Fit& fit, const std::vector<std::size_t>& group, t
 }
 
 // One pass over the vertices whose gap is at least half the largest,
-// largest first, each with a one-ring that no group freed before in the
-// pass has touched. Returns whether some were freed; their groups and the
-// rings around are then dirty.
+// largest first, each moved with its `rings` rings (its group: 1, the
+// one-ring; 2, the one-ring and the ring around it) when no group freed
+// before in the pass has touched them. Returns whether some were freed;
+// their groups and the rings around are then dirty.
 //
 // The candidates are tried in rounds, in parallel, with the outcome of
 // trying them one after the other in their order: a round takes them in
-// order, at most Fit::round_size, each at least four edges from every
-// candidate before it that is not yet tried (a try writes its group, within
-// one edge of the candidate, and reads within two, so it cannot see nor be
-// seen by those); the others wait for the next round, in their order. The
-// outcomes are recorded in the round's order, so the result does not depend
-// on the number of threads.
+// order, at most Fit::round_size, each at least 2 * rings + 2 edges from
+// every candidate before it that is not yet tried (a try writes its group,
+// within `rings` edges of the candidate, and reads one edge farther, so it
+// cannot see nor be seen by those); the others wait for the next round, in
+// their order. The outcomes are recorded in the round's order, so the result
+// does not depend on the number of threads.
 template <typename Fit>
-bool free_stuck_vertices(Fit& fit)
+bool free_stuck_vertices(Fit& fit, std::size_t rings)
 {
   const std::size_t n = fit.vertices_.size();
   std::vector<double> gap(n);
@@ -198,7 +200,25 @@ bool free_stuck_vertices(Fit& fit)
   std::sort(candidates.begin(), candidates.end(),
             [&](std::size_t a, std::size_t b) { return gap[a] != gap[b] ? gap[a] > gap[b] : a < b; });
   auto ring = [&](std::size_t j) { return vertices_around_target(halfedge(fit.vertices_[j], fit.mesh_), fit.mesh_); };
-  std::vector<bool> touched(n, false), claimed(n, false);
+  std::vector<bool> touched(n, false), claimed(n, false), in_group(n, false);
+  // the candidate, then its rings one after the other, each in the order
+  // of the one before
+  auto group_of = [&](std::size_t i) {
+    std::vector<std::size_t> group{i};
+    in_group[i] = true;
+    for(std::size_t r = 0, begin = 0; r < rings; ++r) {
+      const std::size_t end = group.size();
+      for(std::size_t k = begin; k < end; ++k)
+        for(auto w : ring(group[k]))
+          if(!in_group[get(fit.index_, w)]) {
+            in_group[get(fit.index_, w)] = true;
+            group.push_back(get(fit.index_, w));
+          }
+      begin = end;
+    }
+    for(std::size_t j : group) in_group[j] = false;
+    return group;
+  };
   std::vector<std::vector<std::size_t> > groups;
   std::vector<std::size_t> moved, claims, waiting, still_waiting;
   std::size_t next = 0, freed = 0;  // candidates[next, end) not yet seen
@@ -210,12 +230,11 @@ bool free_stuck_vertices(Fit& fit)
     // in the order than those not yet seen
     for(std::size_t k = 0; groups.size() < Fit::round_size && (k < waiting.size() || next < candidates.size()); ++k) {
       const std::size_t i = k < waiting.size() ? waiting[k] : candidates[next++];
-      std::vector<std::size_t> group{i};
-      for(auto w : ring(i)) group.push_back(get(fit.index_, w));
+      std::vector<std::size_t> group = group_of(i);
       if(std::any_of(group.begin(), group.end(), [&](std::size_t j) { return touched[j]; })) continue;
       const bool wait = std::any_of(group.begin(), group.end(), [&](std::size_t j) { return claimed[j]; }) ||
                         budget < group.size();
-      for(std::size_t j : group)  // the group's two-ring, which those after it must not reach
+      for(std::size_t j : group)  // the ring around the group, which those after it must not reach
         for(auto w : ring(j))
           if(!claimed[get(fit.index_, w)]) {
             claimed[get(fit.index_, w)] = true;
@@ -260,7 +279,10 @@ bool free_stuck_vertices(Fit& fit)
 // vertices: the same vertex freed in three passes, then back), and the
 // distance balance moves every vertex after them. So once the fit is
 // untangled, guarded and balanced, one more pass frees the vertices left
-// farthest, with nothing after it. It is kept when no face pair crosses but
+// farthest, with nothing after it, then a pass with their two rings, which
+// frees some that their one-rings cannot (a neighbour held by its own ring:
+// at 10,000 vertices elephant-with-holes 1.32% -> 1.06%, femur 0.86% ->
+// 0.57% Hausdorff). It is kept when no face pair crosses but
 // those of `pairs` (the pairs crossing before it) and, with the distance
 // guard (`guarded`), when the guard's measure does not grow; otherwise it is
 // rolled back.
@@ -273,7 +295,8 @@ void free_stuck_vertices_last(Fit& fit, const typename Fit::Face_pairs& pairs, b
   const Saved_region<Fit> saved(fit, all);
   const std::size_t moves = fit.stats_.moves, freed = fit.stats_.stuck_vertices_freed;
   fit.stats_.stuck_vertices_freed_last = 0;
-  if(!free_stuck_vertices(fit)) return;
+  const bool freed_one_rings = free_stuck_vertices(fit, 1);
+  if(!free_stuck_vertices(fit, 2) && !freed_one_rings) return;
   const typename Fit::Face_pairs after = intersecting_pairs_after(fit, saved.moved(fit), pairs);
   bool keep = after.size() <= pairs.size();
   double distance = 0.;
