@@ -220,7 +220,7 @@ TEST(DeformToFit, FillsThatLeaveTheFitFartherAreUndone)
 
 // A vertex held away from the input by a corner of its one-ring at a bound
 // is freed with its one-ring (stuck_vertices.h), once more after the
-// distance balance: on the initial mesh
+// distance balance, then with its two rings: on the initial mesh
 // nonobtuse_remesh() fits for the sample sphere at N = 50, the farthest
 // point of the fitted mesh from the input comes closer than without, on the
 // written file, which certifies, with the same vertices and topology.
@@ -239,11 +239,15 @@ TEST(DeformToFit, FreesStuckVertices)
   EXPECT_EQ(without.stuck_vertices_freed_last, 0u);
   EXPECT_GT(with.stuck_vertices_freed_last, 0u);
   EXPECT_LT(with.stuck_vertices_freed_last, with.stuck_vertices_freed);
+  // and its pass with two rings frees some that their one-rings could not
+  EXPECT_GT(with.stuck_vertices_freed_two_rings, 0u);
+  EXPECT_LT(with.stuck_vertices_freed_two_rings, with.stuck_vertices_freed_last);
   // the passes' parallel rounds: the same points, bit for bit, on one thread
   const NR::Deform_to_fit_statistics on_one =
       NR::deform_to_fit(freed_on_one, input, NR::parameters::number_of_threads(1));
   EXPECT_EQ(on_one.stuck_vertices_freed, with.stuck_vertices_freed);
   EXPECT_EQ(on_one.stuck_vertices_freed_last, with.stuck_vertices_freed_last);
+  EXPECT_EQ(on_one.stuck_vertices_freed_two_rings, with.stuck_vertices_freed_two_rings);
   EXPECT_TRUE(std::equal(freed.points().begin(), freed.points().end(), freed_on_one.points().begin(),
                          freed_on_one.points().end()));
   const NR::Quality_report a = report(nonobtuse_test::written_and_reread(stuck, "stuck.off"), input);

@@ -118,7 +118,11 @@ Deform_to_fit_statistics deform_to_fit_with(TriangleMesh& mesh, VertexPointMap v
 /// its faces' centroids, so that the mesh straddles the input, certified like
 /// every move, in three rounds kept only if they make no face pair cross
 /// and, with the guard, neither its measure nor the farthest face centroid
-/// grows (else run once more with half the steps; `balance_moves`).
+/// grows (else run once more with half the steps; `balance_moves`). A last
+/// pass frees the vertices left farthest once more, each with its one-ring,
+/// then with its two rings (`stuck_vertices_freed_last`,
+/// `stuck_vertices_freed_two_rings`), kept only if it makes no face pair
+/// cross and, with the guard, its measure does not grow.
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{alpha} weight of the distance term D, in [0, 1]; default 0.5

@@ -294,8 +294,9 @@ void free_stuck_vertices_last(Fit& fit, const typename Fit::Face_pairs& pairs, b
   for(std::size_t i = 0; i < n; ++i) all[i] = i;
   const Saved_region<Fit> saved(fit, all);
   const std::size_t moves = fit.stats_.moves, freed = fit.stats_.stuck_vertices_freed;
-  fit.stats_.stuck_vertices_freed_last = 0;
+  fit.stats_.stuck_vertices_freed_last = fit.stats_.stuck_vertices_freed_two_rings = 0;
   const bool freed_one_rings = free_stuck_vertices(fit, 1);
+  const std::size_t freed_on_one_rings = fit.stats_.stuck_vertices_freed;
   if(!free_stuck_vertices(fit, 2) && !freed_one_rings) return;
   const typename Fit::Face_pairs after = intersecting_pairs_after(fit, saved.moved(fit), pairs);
   bool keep = after.size() <= pairs.size();
@@ -309,6 +310,7 @@ void free_stuck_vertices_last(Fit& fit, const typename Fit::Face_pairs& pairs, b
     if(guarded) fit.stats_.end_distance = 100. * distance / fit.diagonal_;
     fit.stats_.intersecting_pairs = after.size();
     fit.stats_.stuck_vertices_freed_last = fit.stats_.stuck_vertices_freed - freed;
+    fit.stats_.stuck_vertices_freed_two_rings = fit.stats_.stuck_vertices_freed - freed_on_one_rings;
     return;
   }
   saved.restore(fit);
