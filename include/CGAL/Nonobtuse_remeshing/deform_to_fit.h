@@ -121,8 +121,10 @@ Deform_to_fit_statistics deform_to_fit_with(TriangleMesh& mesh, VertexPointMap v
 /// grows (else run once more with half the steps; `balance_moves`). A last
 /// pass frees the vertices left farthest once more, each with its one-ring,
 /// then with its two rings (`stuck_vertices_freed_last`,
-/// `stuck_vertices_freed_two_rings`), kept only if it makes no face pair
-/// cross and, with the guard, its measure does not grow.
+/// `stuck_vertices_freed_two_rings`), each kept on its own once the groups
+/// whose faces cross others are put back (`stuck_vertices_put_back`), if no
+/// more face pairs cross than before it and, with the guard, its measure does
+/// not grow.
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{alpha} weight of the distance term D, in [0, 1]; default 0.5

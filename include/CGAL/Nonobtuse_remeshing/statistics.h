@@ -101,9 +101,12 @@ struct Deform_to_fit_statistics
   std::size_t border_vertices_added = 0;  ///< vertices the fills added (one per notch fill with two faces, one per ear)
   bool border_fills_undone = false;       ///< fills were made, but the fit ended farther with them than without: removed
   std::size_t stuck_vertices_freed = 0;   ///< vertices far from the input moved closer together with their one-ring
-  /// of those, freed by the last pass, after the distance balance (0 when that pass was rolled back)
+  /// of those, freed and kept by the last pass, after the distance balance (its one-ring and
+  /// two-ring halves each count 0 when rolled back)
   std::size_t stuck_vertices_freed_last = 0;
   std::size_t stuck_vertices_freed_two_rings = 0;  ///< of those freed last, freed with their two rings
+  /// groups the last pass freed, then put back because their faces crossed others
+  std::size_t stuck_vertices_put_back = 0;
   bool stuck_vertices_undone = false;     ///< the guard could not end the fit as close as its start after that: undone
   std::size_t balance_moves = 0;          ///< moves along the normals that make the mesh straddle the input
   double rms_distance = 0.;           ///< root mean square distance of the vertices to the input,
@@ -247,6 +250,7 @@ void for_each_field(const Deform_to_fit_statistics& s, F&& f)
   f("stuck_vertices_freed", s.stuck_vertices_freed);
   f("stuck_vertices_freed_last", s.stuck_vertices_freed_last);
   f("stuck_vertices_freed_two_rings", s.stuck_vertices_freed_two_rings);
+  f("stuck_vertices_put_back", s.stuck_vertices_put_back);
   f("stuck_vertices_undone", s.stuck_vertices_undone);
   f("balance_moves", s.balance_moves);
   f("rms_vertex_distance_percent", s.rms_distance);

@@ -920,7 +920,7 @@ private:
   {
     if(!options_.free_stuck_vertices || stuck_passes_ == 4) return false;
     if(stuck_passes_++ == 0 && options_.distance_guard) before_stuck_ = std::make_unique<Fit_state>(*this, false);
-    if(!internal::free_stuck_vertices(*this, 1)) {
+    if(!internal::free_stuck_vertices(*this, 1, nullptr)) {
       if(stuck_passes_ == 1) before_stuck_.reset();
       stuck_passes_ = 4;
       return false;
@@ -956,7 +956,15 @@ private:
     untangle_and_guard();
   }
   template <typename Fit>
-  friend bool free_stuck_vertices(Fit& fit, std::size_t rings);
+  friend bool free_stuck_vertices(Fit& fit, std::size_t rings, std::vector<std::vector<std::size_t> >* freed_groups);
+  template <typename Fit>
+  friend std::size_t free_stuck_vertices_kept(Fit& fit, std::size_t rings, typename Fit::Face_pairs& pairs,
+                                              bool guarded);
+  template <typename Fit>
+  friend bool put_back_crossing_groups(Fit& fit, const Saved_region<Fit>& saved,
+                                       const std::vector<std::vector<std::size_t> >& groups,
+                                       const typename Fit::Face_pairs& before, typename Fit::Face_pairs& after,
+                                       std::size_t& put_back);
   template <typename Fit>
   friend void free_stuck_vertices_last(Fit& fit, const typename Fit::Face_pairs& pairs, bool guarded);
   template <typename Fit>

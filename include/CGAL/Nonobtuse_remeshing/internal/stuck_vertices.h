@@ -37,6 +37,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -174,7 +175,8 @@ std::size_t free_stuck_vertex(Fit& fit, const std::vector<std::size_t>& group, t
 // largest first, each moved with its `rings` rings (its group: 1, the
 // one-ring; 2, the one-ring and the ring around it) when no group freed
 // before in the pass has touched them. Returns whether some were freed;
-// their groups and the rings around are then dirty.
+// their groups and the rings around are then dirty, and the groups are
+// appended to `freed_groups` when it is given.
 //
 // The candidates are tried in rounds, in parallel, with the outcome of
 // trying them one after the other in their order: a round takes them in
@@ -185,7 +187,7 @@ std::size_t free_stuck_vertex(Fit& fit, const std::vector<std::size_t>& group, t
 // their order. The outcomes are recorded in the round's order, so the result
 // does not depend on the number of threads.
 template <typename Fit>
-bool free_stuck_vertices(Fit& fit, std::size_t rings)
+bool free_stuck_vertices(Fit& fit, std::size_t rings, std::vector<std::vector<std::size_t> >* freed_groups)
 {
   const std::size_t n = fit.vertices_.size();
   std::vector<double> gap(n);
@@ -267,11 +269,103 @@ bool free_stuck_vertices(Fit& fit, std::size_t rings)
         fit.dirty_[j] = true;
         for(auto w : ring(j)) fit.dirty_[get(fit.index_, w)] = true;
       }
+      if(freed_groups) freed_groups->push_back(groups[g]);
     }
   }
   fit.collect_counters();
   fit.stats_.stuck_vertices_freed += freed;
   return freed > 0;
+}
+
+// After a freeing pass that made face pairs cross that did not cross before
+// (`before`; `after` holds those crossing now), each group with a vertex on
+// a face of a new pair is put back where `saved` has it, as long as the
+// faces around it still certify exactly (a group freed later in the pass
+// may border it and have been certified against its new position); then
+// the pairs are found again, up to three times. Returns whether no more
+// pairs cross than before, with the number of groups put back in
+// `put_back`; false when a group cannot be put back, and the pass must then
+// be rolled back whole.
+template <typename Fit>
+bool put_back_crossing_groups(Fit& fit, const Saved_region<Fit>& saved,
+                              const std::vector<std::vector<std::size_t> >& groups,
+                              const typename Fit::Face_pairs& before, typename Fit::Face_pairs& after,
+                              std::size_t& put_back)
+{
+  const std::size_t n = fit.vertices_.size();
+  std::vector<std::size_t> group_of(n, groups.size());
+  for(std::size_t g = 0; g < groups.size(); ++g)
+    for(std::size_t j : groups[g]) group_of[j] = g;
+  std::vector<bool> is_back(groups.size(), false);
+  put_back = 0;
+  for(int attempt = 0; attempt < 3 && after.size() > before.size(); ++attempt) {
+    typename Fit::Face_pairs fresh;
+    std::set_difference(after.begin(), after.end(), before.begin(), before.end(), std::back_inserter(fresh),
+                        face_pair_order(fit.mesh_));
+    std::vector<std::size_t> back;  // the groups to put back, in order
+    for(const auto& pair : fresh)
+      for(auto f : {pair.first, pair.second})
+        for(auto v : vertices_around_face(halfedge(f, fit.mesh_), fit.mesh_)) {
+          const std::size_t g = group_of[get(fit.index_, v)];
+          if(g < groups.size() && !is_back[g]) {
+            is_back[g] = true;
+            back.push_back(g);
+          }
+        }
+    if(back.empty()) return false;
+    std::sort(back.begin(), back.end());
+    for(std::size_t g : back) saved.restore(fit, groups[g]);
+    for(std::size_t g : back)
+      for(std::size_t j : groups[g]) {
+        if(!fit.certified_at(j, fit.point(fit.vertices_[j]))) return false;
+        for(auto w : vertices_around_target(halfedge(fit.vertices_[j], fit.mesh_), fit.mesh_))
+          if(!fit.certified_at(get(fit.index_, w), fit.point(w))) return false;
+      }
+    put_back += back.size();
+    after = intersecting_pairs_after(fit, saved.moved(fit), before);
+  }
+  return after.size() <= before.size();
+}
+
+// One freeing pass with `rings` rings, kept when no face pair crosses but
+// those of `pairs` (the pairs crossing before it; updated when it is kept),
+// once the groups that made new pairs cross are put back
+// (put_back_crossing_groups), and, with the distance guard (`guarded`), when
+// the guard's measure does not grow; otherwise rolled back whole. Returns how
+// many groups it freed and kept.
+template <typename Fit>
+std::size_t free_stuck_vertices_kept(Fit& fit, std::size_t rings, typename Fit::Face_pairs& pairs, bool guarded)
+{
+  const std::size_t n = fit.vertices_.size();
+  std::vector<std::size_t> all(n);
+  for(std::size_t i = 0; i < n; ++i) all[i] = i;
+  const Saved_region<Fit> saved(fit, all);
+  const std::size_t moves = fit.stats_.moves, freed = fit.stats_.stuck_vertices_freed;
+  std::vector<std::vector<std::size_t> > groups;
+  if(!free_stuck_vertices(fit, rings, &groups)) return 0;
+  typename Fit::Face_pairs after = intersecting_pairs_after(fit, saved.moved(fit), pairs);
+  std::size_t put_back = 0;
+  bool keep = after.size() <= pairs.size() || put_back_crossing_groups(fit, saved, groups, pairs, after, put_back);
+  keep = keep && put_back < groups.size();
+  double distance = 0.;
+  if(keep && guarded) {
+    // an infinite limit: only the farthest points are asked again without a start face
+    distance = guard_distance(fit, std::numeric_limits<double>::infinity(), nullptr);
+    keep = distance <= fit.stats_.end_distance * fit.diagonal_ / 100.;
+  }
+  if(keep) {
+    if(guarded) fit.stats_.end_distance = 100. * distance / fit.diagonal_;
+    fit.stats_.intersecting_pairs = after.size();
+    pairs.swap(after);
+    fit.stats_.moves = moves + saved.moved(fit).size();
+    fit.stats_.stuck_vertices_freed -= put_back;
+    fit.stats_.stuck_vertices_put_back += put_back;
+    return fit.stats_.stuck_vertices_freed - freed;
+  }
+  saved.restore(fit);
+  fit.stats_.moves = moves;
+  fit.stats_.stuck_vertices_freed = freed;
+  return 0;
 }
 
 // The last pass. The passes above run while the queue has work: it resumes
@@ -282,40 +376,17 @@ bool free_stuck_vertices(Fit& fit, std::size_t rings)
 // farthest, with nothing after it, then a pass with their two rings, which
 // frees some that their one-rings cannot (a neighbour held by its own ring:
 // at 10,000 vertices elephant-with-holes 1.32% -> 1.06%, femur 0.86% ->
-// 0.57% Hausdorff). It is kept when no face pair crosses but
-// those of `pairs` (the pairs crossing before it) and, with the distance
-// guard (`guarded`), when the guard's measure does not grow; otherwise it is
-// rolled back.
+// 0.57% Hausdorff). Each of the two is kept or rolled back on its own
+// (free_stuck_vertices_kept), so a two-ring pass that fails the checks does
+// not undo the one-ring pass before it.
 template <typename Fit>
 void free_stuck_vertices_last(Fit& fit, const typename Fit::Face_pairs& pairs, bool guarded)
 {
-  const std::size_t n = fit.vertices_.size();
-  std::vector<std::size_t> all(n);
-  for(std::size_t i = 0; i < n; ++i) all[i] = i;
-  const Saved_region<Fit> saved(fit, all);
-  const std::size_t moves = fit.stats_.moves, freed = fit.stats_.stuck_vertices_freed;
-  fit.stats_.stuck_vertices_freed_last = fit.stats_.stuck_vertices_freed_two_rings = 0;
-  const bool freed_one_rings = free_stuck_vertices(fit, 1);
-  const std::size_t freed_on_one_rings = fit.stats_.stuck_vertices_freed;
-  if(!free_stuck_vertices(fit, 2) && !freed_one_rings) return;
-  const typename Fit::Face_pairs after = intersecting_pairs_after(fit, saved.moved(fit), pairs);
-  bool keep = after.size() <= pairs.size();
-  double distance = 0.;
-  if(keep && guarded) {
-    // an infinite limit: only the farthest points are asked again without a start face
-    distance = guard_distance(fit, std::numeric_limits<double>::infinity(), nullptr);
-    keep = distance <= fit.stats_.end_distance * fit.diagonal_ / 100.;
-  }
-  if(keep) {
-    if(guarded) fit.stats_.end_distance = 100. * distance / fit.diagonal_;
-    fit.stats_.intersecting_pairs = after.size();
-    fit.stats_.stuck_vertices_freed_last = fit.stats_.stuck_vertices_freed - freed;
-    fit.stats_.stuck_vertices_freed_two_rings = fit.stats_.stuck_vertices_freed - freed_on_one_rings;
-    return;
-  }
-  saved.restore(fit);
-  fit.stats_.moves = moves;
-  fit.stats_.stuck_vertices_freed = freed;
+  typename Fit::Face_pairs crossing = pairs;
+  fit.stats_.stuck_vertices_put_back = 0;
+  fit.stats_.stuck_vertices_freed_last = free_stuck_vertices_kept(fit, 1, crossing, guarded);
+  fit.stats_.stuck_vertices_freed_two_rings = free_stuck_vertices_kept(fit, 2, crossing, guarded);
+  fit.stats_.stuck_vertices_freed_last += fit.stats_.stuck_vertices_freed_two_rings;
 }
 
 } // namespace internal

@@ -188,6 +188,15 @@ public:
       fit.hint_[region_[j]] = hints_[j];
     }
   }
+  // Only the region's vertices at `positions` (positions in the region, which
+  // are the vertices' indices when the region is every vertex).
+  void restore(Fit& fit, const std::vector<std::size_t>& positions) const
+  {
+    for(std::size_t j : positions) {
+      put_point(fit.vpm_, fit.vertices_[region_[j]], points_[j]);
+      fit.hint_[region_[j]] = hints_[j];
+    }
+  }
 
 private:
   const std::vector<std::size_t>& region_;
