@@ -124,7 +124,7 @@ Deform_to_fit_statistics deform_to_fit_with(TriangleMesh& mesh, VertexPointMap v
 /// `stuck_vertices_freed_two_rings`), each kept on its own once the groups
 /// whose faces cross others are put back (`stuck_vertices_put_back`), if no
 /// more face pairs cross than before it and, with the guard, its measure does
-/// not grow.
+/// not grow; the two run again while they free some, at most four times.
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{alpha} weight of the distance term D, in [0, 1]; default 0.5

@@ -101,11 +101,11 @@ struct Deform_to_fit_statistics
   std::size_t border_vertices_added = 0;  ///< vertices the fills added (one per notch fill with two faces, one per ear)
   bool border_fills_undone = false;       ///< fills were made, but the fit ended farther with them than without: removed
   std::size_t stuck_vertices_freed = 0;   ///< vertices far from the input moved closer together with their one-ring
-  /// of those, freed and kept by the last pass, after the distance balance (its one-ring and
-  /// two-ring halves each count 0 when rolled back)
+  /// of those, freed and kept by the last passes, after the distance balance (one-ring and
+  /// two-ring passes in up to four rounds; a pass rolled back counts 0)
   std::size_t stuck_vertices_freed_last = 0;
   std::size_t stuck_vertices_freed_two_rings = 0;  ///< of those freed last, freed with their two rings
-  /// groups the last pass freed, then put back because their faces crossed others
+  /// groups the last passes freed, then put back because their faces crossed others
   std::size_t stuck_vertices_put_back = 0;
   bool stuck_vertices_undone = false;     ///< the guard could not end the fit as close as its start after that: undone
   std::size_t balance_moves = 0;          ///< moves along the normals that make the mesh straddle the input

@@ -64,6 +64,7 @@ struct Deform_to_fit_options
   bool distance_guard = true;
   bool fill_border_notches = true;
   bool free_stuck_vertices = true;
+  int last_stuck_rounds = 4;  // at most this many rounds of the last passes (stuck_vertices.h)
   bool balance_distance = true;
   int threads = 0;  // 0: one per core
 };

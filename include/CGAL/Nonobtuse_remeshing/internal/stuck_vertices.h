@@ -17,9 +17,9 @@
 // objective allows while making room. The group is certified exactly before
 // it is kept, and it is kept only when the farthest from the input of its
 // vertices and of the centroids and edge midpoints of their faces comes at
-// least 10% closer. A last pass follows the distance balance, and a pass
-// with two rings after it. These
-// functions are friends of Deform_to_fit (Deform_to_fit.h).
+// least 10% closer. Last passes follow the distance balance, with one ring
+// and with two, in rounds. These functions are friends of Deform_to_fit
+// (Deform_to_fit.h).
 
 #ifndef CGAL_NONOBTUSE_REMESHING_INTERNAL_STUCK_VERTICES_H
 #define CGAL_NONOBTUSE_REMESHING_INTERNAL_STUCK_VERTICES_H
@@ -378,15 +378,23 @@ std::size_t free_stuck_vertices_kept(Fit& fit, std::size_t rings, typename Fit::
 // at 10,000 vertices elephant-with-holes 1.32% -> 1.06%, femur 0.86% ->
 // 0.57% Hausdorff). Each of the two is kept or rolled back on its own
 // (free_stuck_vertices_kept), so a two-ring pass that fails the checks does
-// not undo the one-ring pass before it.
+// not undo the one-ring pass before it. The pair of passes runs again while
+// it frees some, at most four times by default: a group freed makes room for
+// another (cylinder at 10,000 vertices: 24 groups in one round, 222 in four,
+// 0.356% -> 0.204% Hausdorff).
 template <typename Fit>
 void free_stuck_vertices_last(Fit& fit, const typename Fit::Face_pairs& pairs, bool guarded)
 {
   typename Fit::Face_pairs crossing = pairs;
   fit.stats_.stuck_vertices_put_back = 0;
-  fit.stats_.stuck_vertices_freed_last = free_stuck_vertices_kept(fit, 1, crossing, guarded);
-  fit.stats_.stuck_vertices_freed_two_rings = free_stuck_vertices_kept(fit, 2, crossing, guarded);
-  fit.stats_.stuck_vertices_freed_last += fit.stats_.stuck_vertices_freed_two_rings;
+  fit.stats_.stuck_vertices_freed_last = fit.stats_.stuck_vertices_freed_two_rings = 0;
+  for(int round = 0; round < fit.options_.last_stuck_rounds; ++round) {
+    const std::size_t one = free_stuck_vertices_kept(fit, 1, crossing, guarded);
+    const std::size_t two = free_stuck_vertices_kept(fit, 2, crossing, guarded);
+    fit.stats_.stuck_vertices_freed_two_rings += two;
+    fit.stats_.stuck_vertices_freed_last += one + two;
+    if(one + two == 0) break;
+  }
 }
 
 } // namespace internal
