@@ -113,6 +113,7 @@ struct Deform_to_fit_statistics
                                       ///< in % of the input's bounding-box diagonal (updated per phase)
   bool budget_exhausted = false;
   bool cancelled = false;
+  /// seconds per phase, summed over every run of it (a state the fit rolls back to keeps them)
   double optimization_seconds = 0.;
   double smoothing_seconds = 0.;
   double untangling_seconds = 0.;

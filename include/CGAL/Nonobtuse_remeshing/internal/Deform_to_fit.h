@@ -624,7 +624,14 @@ private:
     classes_.clear();
     colour_classes();
     guard_hints_.clear();  // they may name faces removed since
+    // the time spent stays spent: the phases' seconds are not rolled back
+    const Deform_to_fit_statistics spent = stats_;
     stats_ = s.stats;
+    stats_.optimization_seconds = spent.optimization_seconds;
+    stats_.smoothing_seconds = spent.smoothing_seconds;
+    stats_.untangling_seconds = spent.untangling_seconds;
+    stats_.guard_seconds = spent.guard_seconds;
+    stats_.balance_seconds = spent.balance_seconds;
   }
 
   // The fills removed, last first (Euler::remove_face removes the vertices

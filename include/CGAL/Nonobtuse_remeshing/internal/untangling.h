@@ -238,7 +238,7 @@ typename Fit::Face_pairs untangle(Fit& fit)
     untangle_attempt(fit, own.indices, Fit::Goal::restore, pairs, true);
   }
   fit.stats_.intersecting_pairs = pairs.size();
-  fit.stats_.untangling_seconds = fit.seconds_since(start);
+  fit.stats_.untangling_seconds += fit.seconds_since(start);
   return pairs;
 }
 
