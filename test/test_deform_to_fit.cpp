@@ -49,6 +49,12 @@ Mesh fit_start(const Mesh& input, int resolution)
   return mesh;
 }
 
+// The same points, bit for bit (a fit on one thread against one on two).
+bool same_points(const Mesh& a, const Mesh& b)
+{
+  return std::equal(a.points().begin(), a.points().end(), b.points().begin(), b.points().end());
+}
+
 NR::Quality_report report(const Mesh& mesh, const Mesh& input)
 {
   return NR::quality_report(mesh, &input, NR::parameters::maximum_self_intersections(std::size_t(50)));
@@ -248,8 +254,7 @@ TEST(DeformToFit, FreesStuckVertices)
   EXPECT_EQ(on_one.stuck_vertices_freed, with.stuck_vertices_freed);
   EXPECT_EQ(on_one.stuck_vertices_freed_last, with.stuck_vertices_freed_last);
   EXPECT_EQ(on_one.stuck_vertices_freed_two_rings, with.stuck_vertices_freed_two_rings);
-  EXPECT_TRUE(std::equal(freed.points().begin(), freed.points().end(), freed_on_one.points().begin(),
-                         freed_on_one.points().end()));
+  EXPECT_TRUE(same_points(freed, freed_on_one));
   const NR::Quality_report a = report(nonobtuse_test::written_and_reread(stuck, "stuck.off"), input);
   const NR::Quality_report b = report(nonobtuse_test::written_and_reread(freed, "freed.off"), input);
   std::cout << "[ measured ] sphere N=50: " << with.stuck_vertices_freed << " stuck vertices freed; mesh to input "
@@ -290,8 +295,7 @@ TEST(DeformToFit, PutsBackCrossingGroupsOnly)
   EXPECT_LE(s.end_distance, s.start_distance);
   EXPECT_EQ(t.stuck_vertices_put_back, s.stuck_vertices_put_back);
   EXPECT_EQ(t.stuck_vertices_freed_last, s.stuck_vertices_freed_last);
-  EXPECT_TRUE(std::equal(fitted.points().begin(), fitted.points().end(), on_one.points().begin(),
-                         on_one.points().end()));
+  EXPECT_TRUE(same_points(fitted, on_one));
   const NR::Quality_report r = report(nonobtuse_test::written_and_reread(fitted, "put_back.off"), input);
   EXPECT_TRUE(r.certified);
   EXPECT_EQ(r.self_intersections, 0u);
@@ -315,8 +319,7 @@ TEST(DeformToFit, BalanceMakesTheMeshStraddleTheInput)
   NR::deform_to_fit(balanced_on_one, input, NR::parameters::number_of_threads(1));
   EXPECT_EQ(without.balance_moves, 0u);
   ASSERT_GT(with.balance_moves, 0u);
-  EXPECT_TRUE(std::equal(balanced.points().begin(), balanced.points().end(), balanced_on_one.points().begin(),
-                         balanced_on_one.points().end()));
+  EXPECT_TRUE(same_points(balanced, balanced_on_one));
   const NR::Quality_report a = report(nonobtuse_test::written_and_reread(on_input, "on_input.off"), input);
   const NR::Quality_report b = report(nonobtuse_test::written_and_reread(balanced, "balanced.off"), input);
   std::cout << "[ measured ] sphere N=24: " << with.balance_moves << " balance moves; symmetric Hausdorff "
