@@ -982,7 +982,7 @@ private:
   friend double squared_gap(const Fit& fit, std::size_t j, typename Fit::face_descriptor& hint, std::size_t* sample);
   template <typename Fit>
   friend double farthest_of(const Fit& fit, const std::vector<std::size_t>& group,
-                            std::vector<typename Fit::face_descriptor>& hints);
+                            std::vector<typename Fit::face_descriptor>& hints, double limit);
 
   // Beyond the thesis: distance_guard.h.
   template <typename Fit>
