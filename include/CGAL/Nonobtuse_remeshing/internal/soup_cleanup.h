@@ -14,7 +14,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <map>
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
@@ -66,55 +65,81 @@ inline std::size_t remove_non_manifold_triangles(std::vector<std::array<std::siz
     auto remove = [&](std::size_t f) {
       if(!removed[f]) { removed[f] = true; ++count; changed = true; }
     };
-    // the same face twice (either orientation)
-    std::map<std::array<std::size_t, 3>, std::vector<std::size_t> > by_vertices;
+    // the same face twice (either orientation): sorted by their sorted
+    // corners, equal neighbours are the same face
+    std::vector<std::pair<std::array<std::size_t, 3>, std::size_t> > by_vertices;
+    by_vertices.reserve(triangles.size());
     for(std::size_t f = 0; f < triangles.size(); ++f) {
       if(removed[f]) continue;
       std::array<std::size_t, 3> s = triangles[f];
       std::sort(s.begin(), s.end());
-      by_vertices[s].push_back(f);
+      by_vertices.emplace_back(s, f);
     }
-    for(const auto& entry : by_vertices)
-      if(entry.second.size() > 1)
-        for(std::size_t f : entry.second) remove(f);
-    // edges: at most one triangle per direction, at most two in all
-    std::map<std::pair<std::size_t, std::size_t>, std::vector<std::pair<std::size_t, bool> > > edge_faces;
+    std::sort(by_vertices.begin(), by_vertices.end());
+    for(std::size_t i = 0, j = 0; i < by_vertices.size(); i = j) {
+      while(j < by_vertices.size() && by_vertices[j].first == by_vertices[i].first) ++j;
+      if(j - i > 1)
+        for(std::size_t k = i; k < j; ++k) remove(by_vertices[k].second);
+    }
+    // edges: at most one triangle per direction, at most two in all (the
+    // uses of an edge, sorted by its lower and higher vertex, then face)
+    std::vector<std::array<std::size_t, 4> > uses;  // lower, higher, face, whether lower -> higher
+    uses.reserve(3 * triangles.size());
     for(std::size_t f = 0; f < triangles.size(); ++f) {
       if(removed[f]) continue;
       for(int i = 0; i < 3; ++i) {
         const std::size_t u = triangles[f][i], v = triangles[f][(i + 1) % 3];
-        edge_faces[{(std::min)(u, v), (std::max)(u, v)}].emplace_back(f, u < v);
+        uses.push_back({(std::min)(u, v), (std::max)(u, v), f, std::size_t(u < v)});
       }
     }
-    for(const auto& entry : edge_faces) {
-      const auto& fs = entry.second;
-      if(fs.size() > 2 || (fs.size() == 2 && fs[0].second == fs[1].second))
-        for(const auto& f : fs) remove(f.first);
+    std::sort(uses.begin(), uses.end());
+    for(std::size_t i = 0, j = 0; i < uses.size(); i = j) {
+      while(j < uses.size() && uses[j][0] == uses[i][0] && uses[j][1] == uses[i][1]) ++j;
+      if(j - i > 2 || (j - i == 2 && uses[i][3] == uses[i + 1][3]))
+        for(std::size_t k = i; k < j; ++k) remove(uses[k][2]);
     }
     if(changed) continue;
-    // vertices: the faces around each vertex form one fan
-    std::vector<std::vector<std::size_t> > around(vertex_count);
+    // vertices: the faces around each vertex form one fan (the faces of
+    // vertex v: around[first[v], first[v + 1]), in order)
+    std::vector<std::size_t> first(vertex_count + 1, 0);
     for(std::size_t f = 0; f < triangles.size(); ++f)
       if(!removed[f])
-        for(std::size_t v : triangles[f]) around[v].push_back(f);
-    for(std::size_t v = 0; v < around.size(); ++v) {
-      const std::vector<std::size_t>& fs = around[v];
-      if(fs.size() < 2) continue;
-      Index_sets fan(fs.size());
-      for(std::size_t i = 0; i < fs.size(); ++i)
-        for(std::size_t j = i + 1; j < fs.size(); ++j) {
+        for(std::size_t v : triangles[f]) ++first[v + 1];
+    for(std::size_t v = 0; v < vertex_count; ++v) first[v + 1] += first[v];
+    std::vector<std::size_t> around(first.back()), next(first.begin(), first.end() - 1);
+    for(std::size_t f = 0; f < triangles.size(); ++f)
+      if(!removed[f])
+        for(std::size_t v : triangles[f]) around[next[v]++] = f;
+    Index_sets fan;
+    std::vector<std::pair<std::size_t, std::size_t> > size;  // each fan's root and faces
+    for(std::size_t v = 0; v < vertex_count; ++v) {
+      const std::size_t* fs = around.data() + first[v];
+      const std::size_t valence = first[v + 1] - first[v];
+      if(valence < 2) continue;
+      fan.reset(valence);
+      for(std::size_t i = 0; i < valence; ++i)
+        for(std::size_t j = i + 1; j < valence; ++j) {
           int shared = 0;
           for(std::size_t a : triangles[fs[i]])
             for(std::size_t b : triangles[fs[j]]) shared += (a == b);
           if(shared >= 2) fan.join(i, j);
         }
-      std::map<std::size_t, std::size_t> size;
-      for(std::size_t i = 0; i < fs.size(); ++i) ++size[fan.find(i)];
+      size.clear();
+      for(std::size_t i = 0; i < valence; ++i) {
+        const std::size_t root = fan.find(i);
+        const auto known = std::find_if(size.begin(), size.end(), [&](const auto& e) { return e.first == root; });
+        if(known == size.end()) size.emplace_back(root, 1);
+        else ++known->second;
+      }
       if(size.size() < 2) continue;
-      std::size_t keep = size.begin()->first;
+      std::sort(size.begin(), size.end());
+      std::size_t keep = size.front().first, most = size.front().second;  // the largest fan, the first root on a tie
       for(const auto& s : size)
-        if(s.second > size[keep]) keep = s.first;
-      for(std::size_t i = 0; i < fs.size(); ++i)
+        if(s.second > most) {
+          keep = s.first;
+          most = s.second;
+        }
+      for(std::size_t i = 0; i < valence; ++i)
         if(fan.find(i) != keep) remove(fs[i]);
     }
   }
