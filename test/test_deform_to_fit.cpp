@@ -12,6 +12,7 @@
 #include <CGAL/Nonobtuse_remeshing/deform_to_fit.h>
 #include <CGAL/Nonobtuse_remeshing/internal/feature_attraction.h>
 #include <CGAL/Nonobtuse_remeshing/internal/parallel.h>
+#include <CGAL/Nonobtuse_remeshing/internal/stuck_vertices.h>
 #include <CGAL/Nonobtuse_remeshing/internal/untangling.h>
 
 #include <gtest/gtest.h>
@@ -22,6 +23,7 @@
 #include <cstdio>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <random>
 #include <string>
 #include <unistd.h>
@@ -572,4 +574,76 @@ TEST(DeformToFit, CrossingsCountedAgainFromTheFacesThatMoved)
     }
     EXPECT_GT(most, 0u);
   }
+}
+
+// What farthest_of (stuck_vertices.h) reads of a fit: no feature samples,
+// so a vertex's gap is its distance to the input.
+struct Gap_fit
+{
+  using Point = nonobtuse_test::Point;
+  using face_descriptor = Mesh::Face_index;
+  Gap_fit(Mesh& mesh, const Mesh& input)
+    : mesh_(mesh), input_(input, get(CGAL::vertex_point, input), 0), attracted_begin_(num_vertices(mesh) + 1, 0)
+  {
+    for(Mesh::Vertex_index v : vertices(mesh)) vertices_.push_back(v);
+  }
+  const Point& point(Mesh::Vertex_index v) const { return mesh_.point(v); }
+  Mesh& mesh_;
+  NR::internal::Closest_triangle<Mesh> input_;
+  std::vector<Mesh::Vertex_index> vertices_;
+  std::vector<std::size_t> attracted_begin_, attracted_;
+  std::vector<std::pair<Point, bool> > samples_;
+};
+
+// A group's measure visits each face and edge around it once: it equals the
+// farthest of its vertices and of the centroids and edge midpoints of every
+// face around each of them, measured one by one without hints (one-ring and
+// two-ring groups on pig's initial mesh, which lies up to a cube off the
+// input); and a limit below that value stops it at a distance not below
+// the limit, a limit above leaves the value as it was.
+TEST(DeformToFit, GroupMeasureSeesEveryFaceAndEdge)
+{
+  const Mesh input = nonobtuse_test::load("pig.off");
+  Mesh mesh = initial_mesh(input, 30);
+  mesh.collect_garbage();  // vertex i is vertices_[i]
+  const Gap_fit fit(mesh, input);
+  const auto distance = [&](const nonobtuse_test::Point& p) {
+    return std::sqrt(CGAL::squared_distance(p, fit.input_.triangle(fit.input_.closest(p))));
+  };
+  std::size_t groups = 0;
+  for(std::size_t centre = 0; centre < fit.vertices_.size(); centre += 37)
+    for(int rings : {1, 2}) {
+      std::vector<std::size_t> group{centre};
+      for(int r = 0; r < rings; ++r) {
+        const std::vector<std::size_t> inner = group;
+        for(std::size_t i : inner)
+          for(auto w : vertices_around_target(halfedge(fit.vertices_[i], mesh), mesh))
+            if(std::find(group.begin(), group.end(), std::size_t(w)) == group.end()) group.push_back(std::size_t(w));
+      }
+      double expected = 0.;
+      for(std::size_t i : group) {
+        expected = (std::max)(expected, distance(mesh.point(fit.vertices_[i])));
+        for(auto h : halfedges_around_target(fit.vertices_[i], mesh)) {
+          if(is_border(h, mesh)) continue;
+          const auto& a = mesh.point(target(h, mesh));
+          const auto& b = mesh.point(source(h, mesh));
+          const auto& c = mesh.point(target(next(h, mesh), mesh));
+          for(const auto& p : {CGAL::midpoint(a, b), CGAL::midpoint(b, c), CGAL::midpoint(c, a), CGAL::centroid(a, b, c)})
+            expected = (std::max)(expected, distance(p));
+        }
+      }
+      std::vector<Mesh::Face_index> hints;
+      for(std::size_t i : group) hints.push_back(fit.input_.closest(mesh.point(fit.vertices_[i])));
+      const std::vector<Mesh::Face_index> start = hints;
+      const double measured = NR::internal::farthest_of(fit, group, hints, std::numeric_limits<double>::infinity());
+      ASSERT_NEAR(measured, expected, 1e-9 * expected) << "group of " << centre;
+      std::vector<Mesh::Face_index> again = start;
+      ASSERT_EQ(NR::internal::farthest_of(fit, group, again, 2. * measured), measured);
+      again = start;
+      const double stopped = NR::internal::farthest_of(fit, group, again, 0.5 * measured);
+      ASSERT_GE(stopped, 0.5 * measured);
+      ASSERT_LE(stopped, measured);
+      ++groups;
+    }
+  EXPECT_GT(groups, 20u);
 }

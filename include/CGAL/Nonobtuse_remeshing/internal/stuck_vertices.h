@@ -95,17 +95,14 @@ double farthest_of(const Fit& fit, const std::vector<std::size_t>& group,
     if(std::sqrt(farthest) >= limit) return std::sqrt(farthest);
   }
   std::vector<std::pair<face_descriptor, face_descriptor> > faces;  // each face, with its search's hint
-  for(std::size_t j = 0; j < group.size(); ++j)
-    for(auto h : halfedges_around_target(fit.vertices_[group[j]], fit.mesh_)) {
-      if(is_border(h, fit.mesh_)) continue;
-      const face_descriptor f = face(h, fit.mesh_);
-      if(std::find_if(faces.begin(), faces.end(), [&](const auto& e) { return e.first == f; }) == faces.end())
-        faces.emplace_back(f, hints[j]);
-    }
-  const auto position = [&](face_descriptor f) {
+  const auto position = [&](face_descriptor f) {  // faces.size() when not listed
     return std::size_t(std::find_if(faces.begin(), faces.end(), [&](const auto& e) { return e.first == f; }) -
                        faces.begin());
   };
+  for(std::size_t j = 0; j < group.size(); ++j)
+    for(auto h : halfedges_around_target(fit.vertices_[group[j]], fit.mesh_))
+      if(!is_border(h, fit.mesh_) && position(face(h, fit.mesh_)) == faces.size())
+        faces.emplace_back(face(h, fit.mesh_), hints[j]);
   const auto measure = [&](const Point& p, face_descriptor hint) {  // whether the trial may still pass
     farthest = (std::max)(farthest, CGAL::squared_distance(p, fit.input_.triangle(fit.input_.closest(p, hint))));
     return std::sqrt(farthest) < limit;
