@@ -7,9 +7,11 @@
 // moment, also when a budget or the visitor stops the fit.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/nonobtuse_remeshing.h>
 #include <CGAL/Nonobtuse_remeshing/deform_to_fit.h>
+#include <CGAL/Nonobtuse_remeshing/internal/distance_guard.h>
 #include <CGAL/Nonobtuse_remeshing/internal/feature_attraction.h>
 #include <CGAL/Nonobtuse_remeshing/internal/parallel.h>
 #include <CGAL/Nonobtuse_remeshing/internal/stuck_vertices.h>
@@ -573,6 +575,87 @@ TEST(DeformToFit, CrossingsCountedAgainFromTheFacesThatMoved)
       most = (std::max)(most, pairs.size());
     }
     EXPECT_GT(most, 0u);
+  }
+}
+
+// What the distance guard's input side (distance_guard.h) reads of a fit.
+struct Guard_fit
+{
+  using face_descriptor = Mesh::Face_index;
+  Guard_fit(Mesh& mesh, int threads, double diagonal)
+    : mesh_(mesh), index_(get(boost::vertex_index, mesh)), pool_(threads), diagonal_(diagonal)
+  {
+  }
+  Mesh& mesh_;
+  boost::property_map<Mesh, boost::vertex_index_t>::const_type index_;
+  NR::internal::Thread_pool pool_;
+  double diagonal_;
+  std::vector<nonobtuse_test::Point> guard_points_;
+  std::vector<face_descriptor> guard_hints_;
+};
+
+// The guard's input side asks only the points whose distance can count, from
+// bounds by the faces found at the previous measurement: its farthest
+// distance and its list of vertices near the points beyond the limit are
+// those of asking every point without a start face, as the mesh moves (pig's
+// initial mesh, the input's vertices and face centroids as guard points,
+// limits at 60% and 90% of the farthest and none, one and two threads).
+TEST(DeformToFit, GuardMeasureAsksEveryPointThatCounts)
+{
+  const Mesh input = nonobtuse_test::load("pig.off");
+  for(int threads : {1, 2}) {
+    SCOPED_TRACE(threads);
+    Mesh mesh = initial_mesh(input, 30);
+    mesh.collect_garbage();  // vertex index i is the i-th vertex
+    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
+    Guard_fit fit(mesh, threads,
+                  std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                            CGAL::square(box.zmax() - box.zmin())));
+    for(auto v : vertices(input)) fit.guard_points_.push_back(input.point(v));
+    for(auto f : faces(input)) {
+      const auto h = halfedge(f, input);
+      fit.guard_points_.push_back(CGAL::centroid(input.point(source(h, input)), input.point(target(h, input)),
+                                                 input.point(target(next(h, input), input))));
+    }
+    double edges = 0.;
+    for(auto e : CGAL::edges(mesh))
+      edges += std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> step(-0.1 * edges / double(num_edges(mesh)),
+                                                0.1 * edges / double(num_edges(mesh)));
+    std::size_t beyond = 0;
+    for(int trial = 0; trial < 6; ++trial) {
+      SCOPED_TRACE(trial);
+      // every point asked without a start face
+      CGAL::AABB_tree<CGAL::AABB_traits<CGAL::Epick, CGAL::AABB_face_graph_triangle_primitive<Mesh> > > tree(
+          faces(mesh).first, faces(mesh).second, mesh);
+      tree.accelerate_distance_queries();  // then built, as the guard builds its tree
+      tree.build();
+      std::vector<double> d(fit.guard_points_.size());
+      std::vector<Mesh::Face_index> closest(d.size());
+      for(std::size_t s = 0; s < d.size(); ++s) {
+        const auto hit = tree.closest_point_and_primitive(fit.guard_points_[s]);
+        d[s] = std::sqrt(CGAL::squared_distance(fit.guard_points_[s], hit.first));
+        closest[s] = hit.second;
+      }
+      const double farthest = *std::max_element(d.begin(), d.end());
+      for(double share : {0.6, 0.9}) {
+        NR::internal::Vertex_list expected(num_vertices(mesh)), far(num_vertices(mesh));
+        for(std::size_t s = 0; s < d.size(); ++s)
+          if(d[s] > share * farthest)
+            for(auto v : vertices_around_face(halfedge(closest[s], mesh), mesh)) expected.add(std::size_t(v));
+        ASSERT_EQ(NR::internal::input_side(fit, mesh.points(), share * farthest, &far), farthest);
+        ASSERT_EQ(far.indices, expected.indices);
+        beyond += expected.indices.size();
+      }
+      ASSERT_EQ(NR::internal::input_side(fit, mesh.points(), 0., nullptr), farthest);
+      // the fit's moves: every vertex a tenth of an edge at most
+      for(auto v : vertices(mesh)) {
+        const nonobtuse_test::Point p = mesh.point(v);
+        mesh.point(v) = nonobtuse_test::Point(p.x() + step(random), p.y() + step(random), p.z() + step(random));
+      }
+    }
+    EXPECT_GT(beyond, 0u);
   }
 }
 

@@ -80,14 +80,20 @@ struct Start_point_map
 // spacing, and points along its sharp and border edges; and points on its
 // faces, add_face_samples) from the mesh with its vertices at `points`.
 // With `far`, also the corners of the face closest to each guard point
-// farther than `limit`. Each query starts from the face found closest at
-// the previous measurement (the vertices moved little since), which lets
-// the tree prune at once. Where two faces are equally close (a point
-// nearest to their common edge, as on CAD parts), the face found depends on
-// the start, and so would the vertices moved back: the points farther than
-// `limit`, and the farthest (both within a relative 1e-9), are asked again
-// without a start, so that the result is that of unhinted queries. Queries
-// run on the fit's workers; the result does not depend on their number.
+// farther than `limit`. Where two faces are equally close (a point nearest
+// to their common edge, as on CAD parts), the face a query finds depends on
+// where its search starts, and so would the vertices moved back: every
+// distance that counts is that of a query without a start. Only the points
+// that can count are asked: each point's distance to the face found closest
+// at the previous measurement (the vertices moved little since) bounds its
+// distance from above, the point with the largest bound gives a lower bound
+// of the farthest, and only the points whose bound reaches it, or `limit`
+// with `far`, are asked (bounds widened by a relative 1e-9 and 1e-12 of the
+// diagonal: the mesh's triangles are well shaped, so the kernel's projections
+// onto them are accurate to the last bits). The result is that of asking
+// every point; on elephant at 10,000 vertices this measure had been a sixth
+// of the run. Queries run on the fit's workers; the result does not depend
+// on their number.
 template <typename Fit, typename Points>
 double input_side(Fit& fit, const Points& points, double limit, Vertex_list* far)
 {
@@ -95,6 +101,7 @@ double input_side(Fit& fit, const Points& points, double limit, Vertex_list* far
   using Primitive = AABB_face_graph_triangle_primitive<Mesh, Points>;
   using Tree = AABB_tree<AABB_traits<Epick, Primitive> >;
   const std::vector<Epick::Point_3>& guard = fit.guard_points_;
+  if(guard.empty()) return 0.;
   Tree tree(faces(fit.mesh_).first, faces(fit.mesh_).second, fit.mesh_, points);
   std::vector<typename Fit::face_descriptor>& hints = fit.guard_hints_;
   const bool hinted = hints.size() == guard.size();
@@ -103,40 +110,36 @@ double input_side(Fit& fit, const Points& points, double limit, Vertex_list* far
   // unhinted queries would answer ties differently.
   tree.accelerate_distance_queries();
   tree.build();
-  hints.resize(guard.size());
-  std::vector<double> nearest(guard.size());
-  fit.pool_.for_each(guard.size(), [&](std::size_t s, int) {
-    std::pair<Epick::Point_3, typename Fit::face_descriptor> hit;
-    if(hinted) {
+  std::vector<std::size_t> asked;
+  if(hinted) {
+    std::vector<double> bound(guard.size());
+    fit.pool_.for_each(guard.size(), [&](std::size_t s, int) {
       const auto h = halfedge(hints[s], fit.mesh_);
       const Epick::Triangle_3 t(get(points, source(h, fit.mesh_)), get(points, target(h, fit.mesh_)),
                                 get(points, target(next(h, fit.mesh_), fit.mesh_)));
-      hit = tree.closest_point_and_primitive(
-          guard[s], std::make_pair(Epick().construct_projected_point_3_object()(t, guard[s]), hints[s]));
-    } else {
-      hit = tree.closest_point_and_primitive(guard[s]);
-    }
-    nearest[s] = std::sqrt(CGAL::squared_distance(guard[s], hit.first));
+      bound[s] = std::sqrt(CGAL::squared_distance(guard[s], t)) * (1. + 1e-9) + 1e-12 * fit.diagonal_;
+    });
+    const std::size_t top = std::size_t(std::max_element(bound.begin(), bound.end()) - bound.begin());
+    const double at_least = std::sqrt(CGAL::squared_distance(guard[top], tree.closest_point(guard[top])));
+    for(std::size_t s = 0; s < guard.size(); ++s)
+      if(bound[s] >= at_least || (far && bound[s] > limit)) asked.push_back(s);
+  } else {
+    hints.resize(guard.size());
+    asked.resize(guard.size());
+    for(std::size_t s = 0; s < guard.size(); ++s) asked[s] = s;
+  }
+  std::vector<double> nearest(asked.size());
+  fit.pool_.for_each(asked.size(), [&](std::size_t j, int) {
+    const std::size_t s = asked[j];
+    const auto hit = tree.closest_point_and_primitive(guard[s]);
+    nearest[j] = std::sqrt(CGAL::squared_distance(guard[s], hit.first));
     hints[s] = hit.second;
   });
-  if(hinted && !guard.empty()) {
-    // a hinted distance may differ from the unhinted one in its last bits
-    const double band = 1. - 1e-9, top = *std::max_element(nearest.begin(), nearest.end());
-    std::vector<std::size_t> again;
-    for(std::size_t s = 0; s < guard.size(); ++s)
-      if(nearest[s] > band * limit || nearest[s] >= band * top) again.push_back(s);
-    fit.pool_.for_each(again.size(), [&](std::size_t j, int) {
-      const std::size_t s = again[j];
-      const auto hit = tree.closest_point_and_primitive(guard[s]);
-      nearest[s] = std::sqrt(CGAL::squared_distance(guard[s], hit.first));
-      hints[s] = hit.second;
-    });
-  }
   double farthest = 0.;
-  for(std::size_t s = 0; s < guard.size(); ++s) {
-    farthest = (std::max)(farthest, nearest[s]);
-    if(far && nearest[s] > limit)
-      for(auto v : vertices_around_face(halfedge(hints[s], fit.mesh_), fit.mesh_)) far->add(get(fit.index_, v));
+  for(std::size_t j = 0; j < asked.size(); ++j) {
+    farthest = (std::max)(farthest, nearest[j]);
+    if(far && nearest[j] > limit)
+      for(auto v : vertices_around_face(halfedge(hints[asked[j]], fit.mesh_), fit.mesh_)) far->add(get(fit.index_, v));
   }
   return farthest;
 }
