@@ -85,10 +85,11 @@ struct Start_point_map
 // where its search starts, and so would the vertices moved back: every
 // distance that counts is that of a query without a start. Only the points
 // that can count are asked: each point's distance to the face found closest
-// at the previous measurement (the vertices moved little since) bounds its
-// distance from above, the point with the largest bound gives a lower bound
-// of the farthest, and only the points whose bound reaches it, or `limit`
-// with `far`, are asked (bounds widened by a relative 1e-9 and 1e-12 of the
+// at the previous measurement (the vertices moved little since; at the
+// first, the face of the search tree's nearest reference point) bounds its
+// distance from above; the points are asked by decreasing bound until the
+// next bound is below the farthest distance found, then, with `far`, those
+// whose bound is over `limit` (bounds widened by a relative 1e-9 and 1e-12 of the
 // diagonal: the mesh's triangles are well shaped, so the kernel's projections
 // onto them are accurate to the last bits). The result is that of asking
 // every point; on elephant at 10,000 vertices this measure had been a sixth
@@ -110,36 +111,49 @@ double input_side(Fit& fit, const Points& points, double limit, Vertex_list* far
   // unhinted queries would answer ties differently.
   tree.accelerate_distance_queries();
   tree.build();
-  std::vector<std::size_t> asked;
-  if(hinted) {
-    std::vector<double> bound(guard.size());
-    fit.pool_.for_each(guard.size(), [&](std::size_t s, int) {
-      const auto h = halfedge(hints[s], fit.mesh_);
-      const Epick::Triangle_3 t(get(points, source(h, fit.mesh_)), get(points, target(h, fit.mesh_)),
-                                get(points, target(next(h, fit.mesh_), fit.mesh_)));
-      bound[s] = std::sqrt(CGAL::squared_distance(guard[s], t)) * (1. + 1e-9) + 1e-12 * fit.diagonal_;
-    });
-    const std::size_t top = std::size_t(std::max_element(bound.begin(), bound.end()) - bound.begin());
-    const double at_least = std::sqrt(CGAL::squared_distance(guard[top], tree.closest_point(guard[top])));
-    for(std::size_t s = 0; s < guard.size(); ++s)
-      if(bound[s] >= at_least || (far && bound[s] > limit)) asked.push_back(s);
-  } else {
+  if(!hinted) {  // the first measurement: the faces of the search tree's nearest reference points
     hints.resize(guard.size());
-    asked.resize(guard.size());
-    for(std::size_t s = 0; s < guard.size(); ++s) asked[s] = s;
+    fit.pool_.for_each(guard.size(), [&](std::size_t s, int) { hints[s] = tree.best_hint(guard[s]).second; });
   }
-  std::vector<double> nearest(asked.size());
-  fit.pool_.for_each(asked.size(), [&](std::size_t j, int) {
-    const std::size_t s = asked[j];
-    const auto hit = tree.closest_point_and_primitive(guard[s]);
-    nearest[j] = std::sqrt(CGAL::squared_distance(guard[s], hit.first));
-    hints[s] = hit.second;
+  std::vector<double> bound(guard.size());
+  fit.pool_.for_each(guard.size(), [&](std::size_t s, int) {
+    const auto h = halfedge(hints[s], fit.mesh_);
+    const Epick::Triangle_3 t(get(points, source(h, fit.mesh_)), get(points, target(h, fit.mesh_)),
+                              get(points, target(next(h, fit.mesh_), fit.mesh_)));
+    bound[s] = std::sqrt(CGAL::squared_distance(guard[s], t)) * (1. + 1e-9) + 1e-12 * fit.diagonal_;
   });
+  // the points by decreasing bound, asked in batches until the next bound is
+  // below the farthest distance found
+  std::vector<std::size_t> order(guard.size());
+  for(std::size_t s = 0; s < order.size(); ++s) order[s] = s;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return bound[a] > bound[b] || (bound[a] == bound[b] && a < b);
+  });
+  std::vector<double> nearest(guard.size(), -1.);
+  std::vector<std::size_t> batch;
+  const auto ask = [&] {
+    fit.pool_.for_each(batch.size(), [&](std::size_t j, int) {
+      const std::size_t s = batch[j];
+      const auto hit = tree.closest_point_and_primitive(guard[s]);
+      nearest[s] = std::sqrt(CGAL::squared_distance(guard[s], hit.first));
+      hints[s] = hit.second;
+    });
+  };
   double farthest = 0.;
-  for(std::size_t j = 0; j < asked.size(); ++j) {
-    farthest = (std::max)(farthest, nearest[j]);
-    if(far && nearest[j] > limit)
-      for(auto v : vertices_around_face(halfedge(hints[asked[j]], fit.mesh_), fit.mesh_)) far->add(get(fit.index_, v));
+  std::size_t next = 0;
+  while(next < order.size() && bound[order[next]] >= farthest) {
+    batch.clear();
+    while(batch.size() < 64 && next < order.size() && bound[order[next]] >= farthest) batch.push_back(order[next++]);
+    ask();
+    for(std::size_t s : batch) farthest = (std::max)(farthest, nearest[s]);
+  }
+  if(far) {
+    batch.clear();
+    for(; next < order.size() && bound[order[next]] > limit; ++next) batch.push_back(order[next]);
+    ask();
+    for(std::size_t s = 0; s < guard.size(); ++s)
+      if(nearest[s] > limit)
+        for(auto v : vertices_around_face(halfedge(hints[s], fit.mesh_), fit.mesh_)) far->add(get(fit.index_, v));
   }
   return farthest;
 }
