@@ -7,11 +7,11 @@
 // moment, also when a budget or the visitor stops the fit.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/nonobtuse_remeshing.h>
 #include <CGAL/Nonobtuse_remeshing/deform_to_fit.h>
 #include <CGAL/Nonobtuse_remeshing/internal/distance_guard.h>
+#include <CGAL/Nonobtuse_remeshing/internal/distance_measures.h>
 #include <CGAL/Nonobtuse_remeshing/internal/feature_attraction.h>
 #include <CGAL/Nonobtuse_remeshing/internal/parallel.h>
 #include <CGAL/Nonobtuse_remeshing/internal/stuck_vertices.h>
@@ -40,6 +40,14 @@ Mesh initial_mesh(const Mesh& input, int resolution)
   Mesh output;
   NR::nonobtuse_marching_cubes(input, output, NR::parameters::resolution(resolution));
   return output;
+}
+
+double mean_edge_length(const Mesh& mesh)
+{
+  double sum = 0.;
+  for(auto e : CGAL::edges(mesh))
+    sum += std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
+  return sum / double(num_edges(mesh));
 }
 
 // The mesh nonobtuse_remesh() fits at resolution N: the initial mesh after
@@ -546,10 +554,7 @@ TEST(DeformToFit, CrossingsCountedAgainFromTheFacesThatMoved)
     Mesh mesh = initial_mesh(input, 30);
     mesh.collect_garbage();  // vertex i is vertices_[i]
     Crossing_fit fit(mesh, threads);
-    double edges = 0.;
-    for(auto e : CGAL::edges(mesh))
-      edges += std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
-    const double edge = edges / double(num_edges(mesh));
+    const double edge = mean_edge_length(mesh);
     std::mt19937 random(11);
     std::uniform_int_distribution<std::size_t> pick(0, fit.vertices_.size() - 1);
     std::uniform_real_distribution<double> step(-edge, edge);
@@ -607,28 +612,21 @@ TEST(DeformToFit, GuardMeasureAsksEveryPointThatCounts)
     SCOPED_TRACE(threads);
     Mesh mesh = initial_mesh(input, 30);
     mesh.collect_garbage();  // vertex index i is the i-th vertex
-    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
-    Guard_fit fit(mesh, threads,
-                  std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                            CGAL::square(box.zmax() - box.zmin())));
+    Guard_fit fit(mesh, threads, NR::internal::bbox_diagonal(mesh));
     for(auto v : vertices(input)) fit.guard_points_.push_back(input.point(v));
     for(auto f : faces(input)) {
       const auto h = halfedge(f, input);
       fit.guard_points_.push_back(CGAL::centroid(input.point(source(h, input)), input.point(target(h, input)),
                                                  input.point(target(next(h, input), input))));
     }
-    double edges = 0.;
-    for(auto e : CGAL::edges(mesh))
-      edges += std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
+    const double edge = mean_edge_length(mesh);
     std::mt19937 random(5);
-    std::uniform_real_distribution<double> step(-0.1 * edges / double(num_edges(mesh)),
-                                                0.1 * edges / double(num_edges(mesh)));
+    std::uniform_real_distribution<double> step(-0.1 * edge, 0.1 * edge);
     std::size_t beyond = 0;
     for(int trial = 0; trial < 6; ++trial) {
       SCOPED_TRACE(trial);
       // every point asked without a start face
-      CGAL::AABB_tree<CGAL::AABB_traits<CGAL::Epick, CGAL::AABB_face_graph_triangle_primitive<Mesh> > > tree(
-          faces(mesh).first, faces(mesh).second, mesh);
+      NR::internal::Face_tree<Mesh> tree(faces(mesh).first, faces(mesh).second, mesh);
       tree.accelerate_distance_queries();  // then built, as the guard builds its tree
       tree.build();
       std::vector<double> d(fit.guard_points_.size());

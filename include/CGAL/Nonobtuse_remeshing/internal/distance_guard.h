@@ -105,13 +105,12 @@ double input_side(Fit& fit, const Points& points, double limit, Vertex_list* far
   if(guard.empty()) return 0.;
   Tree tree(faces(fit.mesh_).first, faces(fit.mesh_).second, fit.mesh_, points);
   std::vector<typename Fit::face_descriptor>& hints = fit.guard_hints_;
-  const bool hinted = hints.size() == guard.size();
   // The search tree of hints first: built after the tree, it would see the
   // primitives in the order the tree's construction left them, and the
   // unhinted queries would answer ties differently.
   tree.accelerate_distance_queries();
   tree.build();
-  if(!hinted) {  // the first measurement: the faces of the search tree's nearest reference points
+  if(hints.size() != guard.size()) {  // the first measurement: the faces of the search tree's nearest reference points
     hints.resize(guard.size());
     fit.pool_.for_each(guard.size(), [&](std::size_t s, int) { hints[s] = tree.best_hint(guard[s]).second; });
   }
