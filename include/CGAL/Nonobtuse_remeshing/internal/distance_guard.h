@@ -26,6 +26,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
+#include <numeric>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -121,13 +123,15 @@ double input_side(Fit& fit, const Points& points, double limit, Vertex_list* far
                               get(points, target(next(h, fit.mesh_), fit.mesh_)));
     bound[s] = std::sqrt(CGAL::squared_distance(guard[s], t)) * (1. + 1e-9) + 1e-12 * fit.diagonal_;
   });
-  // the points by decreasing bound, asked in batches until the next bound is
-  // below the farthest distance found
-  std::vector<std::size_t> order(guard.size());
-  for(std::size_t s = 0; s < order.size(); ++s) order[s] = s;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return bound[a] > bound[b] || (bound[a] == bound[b] && a < b);
-  });
+  // the points by decreasing bound (a heap: the points taken off its top are
+  // few), asked in batches until the next bound is below the farthest
+  // distance found
+  std::vector<std::size_t> heap(guard.size());
+  std::iota(heap.begin(), heap.end(), std::size_t(0));
+  const auto lower = [&](std::size_t a, std::size_t b) {
+    return bound[a] < bound[b] || (bound[a] == bound[b] && a > b);
+  };
+  std::make_heap(heap.begin(), heap.end(), lower);
   std::vector<double> nearest(guard.size(), -1.);
   std::vector<std::size_t> batch;
   const auto ask = [&] {
@@ -139,16 +143,19 @@ double input_side(Fit& fit, const Points& points, double limit, Vertex_list* far
     });
   };
   double farthest = 0.;
-  std::size_t next = 0;
-  while(next < order.size() && bound[order[next]] >= farthest) {
+  while(!heap.empty() && bound[heap.front()] >= farthest) {
     batch.clear();
-    while(batch.size() < 64 && next < order.size() && bound[order[next]] >= farthest) batch.push_back(order[next++]);
+    while(batch.size() < 64 && !heap.empty() && bound[heap.front()] >= farthest) {
+      batch.push_back(heap.front());
+      std::pop_heap(heap.begin(), heap.end(), lower);
+      heap.pop_back();
+    }
     ask();
     for(std::size_t s : batch) farthest = (std::max)(farthest, nearest[s]);
   }
   if(far) {
     batch.clear();
-    for(; next < order.size() && bound[order[next]] > limit; ++next) batch.push_back(order[next]);
+    std::copy_if(heap.begin(), heap.end(), std::back_inserter(batch), [&](std::size_t s) { return bound[s] > limit; });
     ask();
     for(std::size_t s = 0; s < guard.size(); ++s)
       if(nearest[s] > limit)
