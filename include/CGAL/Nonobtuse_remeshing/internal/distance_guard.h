@@ -107,11 +107,15 @@ double input_side(Fit& fit, const Points& points, double limit, Vertex_list* far
   if(guard.empty()) return 0.;
   Tree tree(faces(fit.mesh_).first, faces(fit.mesh_).second, fit.mesh_, points);
   std::vector<typename Fit::face_descriptor>& hints = fit.guard_hints_;
-  // The search tree of hints first: built after the tree, it would see the
-  // primitives in the order the tree's construction left them, and the
-  // unhinted queries would answer ties differently.
-  tree.accelerate_distance_queries();
-  tree.build();
+  // The search tree of hints takes the faces' reference points in the order
+  // of faces(mesh), as the tree's own accelerate_distance_queries() does
+  // before build() reorders its primitives (after, the unhinted queries
+  // would answer ties differently); so the two can be built side by side.
+  std::vector<typename Tree::Point_and_primitive_id> references;
+  references.reserve(num_faces(fit.mesh_));
+  for(auto f : faces(fit.mesh_)) references.emplace_back(get(points, target(halfedge(f, fit.mesh_), fit.mesh_)), f);
+  fit.pool_.invoke([&] { tree.build(); },
+                   [&] { tree.accelerate_distance_queries(references.begin(), references.end()); });
   if(hints.size() != guard.size()) {  // the first measurement: the faces of the search tree's nearest reference points
     hints.resize(guard.size());
     fit.pool_.for_each(guard.size(), [&](std::size_t s, int) { hints[s] = tree.best_hint(guard[s]).second; });

@@ -15,6 +15,7 @@
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #endif
@@ -81,6 +82,20 @@ public:
     }
 #endif
     for(std::size_t i = 0; i < n; ++i) f(i, 0);
+  }
+
+  /// Calls f() and g(), side by side when there are workers.
+  template <typename F, typename G>
+  void invoke(const F& f, const G& g)
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(arena_) {
+      execute([&] { tbb::parallel_invoke(f, g); });
+      return;
+    }
+#endif
+    f();
+    g();
   }
 
 private:
