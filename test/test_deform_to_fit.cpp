@@ -7,6 +7,7 @@
 // moment, also when a budget or the visitor stops the fit.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/nonobtuse_remeshing.h>
 #include <CGAL/Nonobtuse_remeshing/deform_to_fit.h>
@@ -543,9 +544,23 @@ struct Crossing_fit
   std::vector<Mesh::Vertex_index> vertices_;
 };
 
+// PMP's self-intersecting pairs of the whole mesh on one thread, each
+// pair's smaller face index first, sorted.
+Crossing_fit::Face_pairs pmp_crossings(const Mesh& mesh)
+{
+  Crossing_fit::Face_pairs pairs;
+  CGAL::Polygon_mesh_processing::self_intersections(faces(mesh), mesh, std::back_inserter(pairs));
+  for(auto& p : pairs)
+    if(p.second < p.first) std::swap(p.first, p.second);
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
 // The untangling and the distance guard test again only the faces that
 // moved and those whose boxes meet them: the list is the whole mesh's, as
-// vertices move, crossings come and go, on one and two threads.
+// vertices move, crossings come and go, on one and two threads. The whole
+// mesh's list (searched in one slab per worker on a mesh this large) is
+// PMP's.
 TEST(DeformToFit, CrossingsCountedAgainFromTheFacesThatMoved)
 {
   const Mesh input = nonobtuse_test::load("rotor.off");
@@ -553,6 +568,7 @@ TEST(DeformToFit, CrossingsCountedAgainFromTheFacesThatMoved)
     SCOPED_TRACE(threads);
     Mesh mesh = initial_mesh(input, 30);
     mesh.collect_garbage();  // vertex i is vertices_[i]
+    ASSERT_GE(num_faces(mesh), 4096u);  // large enough for the slabs
     Crossing_fit fit(mesh, threads);
     const double edge = mean_edge_length(mesh);
     std::mt19937 random(11);
@@ -577,6 +593,7 @@ TEST(DeformToFit, CrossingsCountedAgainFromTheFacesThatMoved)
       const Crossing_fit::Face_pairs after = NR::internal::intersecting_pairs_after(fit, moved, pairs);
       pairs = NR::internal::intersecting_pairs(fit);
       ASSERT_EQ(after, pairs);
+      ASSERT_EQ(pairs, pmp_crossings(mesh));
       most = (std::max)(most, pairs.size());
     }
     EXPECT_GT(most, 0u);
