@@ -14,10 +14,14 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <iostream>
 #include <fstream>
 #include <iterator>
 #include <set>
 #include <string>
+#include <system_error>
+#include <vector>
 #include <dirent.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -86,6 +90,43 @@ inline Shell_run run_shell(const std::string& command)
   r.peak_mib = double(usage.ru_maxrss) / 1024.;
   return r;
 }
+
+// Every test process writes its files under a folder of its own:
+// ::testing::TempDir() returns TEST_TMPDIR, set here to a fresh folder in
+// the one it named before (or TMPDIR, or /tmp) when the tests start. The
+// folder is removed when the process ends with every test passed; after a
+// failure it stays, and its path is printed.
+class Scratch_root : public ::testing::EmptyTestEventListener
+{
+public:
+  void OnTestProgramStart(const ::testing::UnitTest&) override
+  {
+    const std::string base = ::testing::TempDir();
+    std::vector<char> name(base.begin(), base.end());
+    for(char c : std::string("nonobtuse_tests_XXXXXX")) name.push_back(c);
+    name.push_back('\0');
+    if(::mkdtemp(name.data()) == nullptr) return;  // the tests then write where TempDir() said
+    root_ = name.data();
+    ::setenv("TEST_TMPDIR", root_.c_str(), 1);
+  }
+  void OnTestProgramEnd(const ::testing::UnitTest& unit) override
+  {
+    if(root_.empty()) return;
+    std::error_code ignored;
+    if(unit.Passed())
+      std::filesystem::remove_all(root_, ignored);
+    else
+      std::cerr << "the tests' files are kept in " << root_ << "\n";
+  }
+
+private:
+  std::string root_;
+};
+
+inline const bool scratch_root_registered = [] {
+  ::testing::UnitTest::GetInstance()->listeners().Append(new Scratch_root);
+  return true;
+}();
 
 // A fresh scratch folder per test.
 inline std::string scratch_folder(const std::string& test)
