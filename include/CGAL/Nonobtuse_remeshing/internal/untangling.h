@@ -116,7 +116,7 @@ typename Fit::Face_pairs intersecting_pairs(Fit& fit)
 // times in its fit (0.55 s of 2.9 s). When the moved faces are half the
 // mesh or more (the distance balance moves nearly every vertex), the whole
 // mesh is tested at once: the boxes' pass before the test would cost as
-// much as the test, on one thread.
+// much as the test.
 template <typename Fit>
 typename Fit::Face_pairs intersecting_pairs_after(Fit& fit, const std::vector<std::size_t>& moved,
                                                   const typename Fit::Face_pairs& before)
