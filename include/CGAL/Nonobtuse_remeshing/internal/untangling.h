@@ -45,6 +45,15 @@ auto face_pair_order(const Mesh& mesh)
   };
 }
 
+// The bounding box of face f of `mesh`, its vertices at `points`.
+template <typename Mesh, typename Points>
+Bbox_3 face_bbox(const Mesh& mesh, const Points& points, typename boost::graph_traits<Mesh>::face_descriptor f)
+{
+  const auto h = halfedge(f, mesh);
+  return get(points, source(h, mesh)).bbox() + get(points, target(h, mesh)).bbox() +
+         get(points, target(next(h, mesh), mesh)).bbox();
+}
+
 // The self-intersecting pairs among the faces `range` of the fit's mesh, in
 // face_pair_order. With several workers and many faces, the faces are cut
 // into one slab per worker across the longest side of their bounding box, at
@@ -68,9 +77,7 @@ typename Fit::Face_pairs intersecting_pairs_among(Fit& fit, const FaceRange& ran
     std::vector<Bbox_3> boxes(all.size());
     Bbox_3 whole;
     for(std::size_t j = 0; j < all.size(); ++j) {
-      const auto h = halfedge(all[j], fit.mesh_);
-      boxes[j] = fit.point(source(h, fit.mesh_)).bbox() + fit.point(target(h, fit.mesh_)).bbox() +
-                 fit.point(target(next(h, fit.mesh_), fit.mesh_)).bbox();
+      boxes[j] = face_bbox(fit.mesh_, fit.points_, all[j]);
       whole += boxes[j];
     }
     int axis = 0;
@@ -78,11 +85,14 @@ typename Fit::Face_pairs intersecting_pairs_among(Fit& fit, const FaceRange& ran
       if(whole.max(a) - whole.min(a) > whole.max(axis) - whole.min(axis)) axis = a;
     std::vector<double> centres(all.size());
     for(std::size_t j = 0; j < all.size(); ++j) centres[j] = boxes[j].min(axis) + boxes[j].max(axis);
-    std::sort(centres.begin(), centres.end());
     std::vector<double> cuts(slabs + 1);  // slab k: [cuts[k], cuts[k + 1]] (in twice the coordinate)
     cuts.front() = -std::numeric_limits<double>::infinity();
     cuts.back() = std::numeric_limits<double>::infinity();
-    for(std::size_t k = 1; k < slabs; ++k) cuts[k] = centres[all.size() * k / slabs];
+    for(std::size_t k = 1; k < slabs; ++k) {
+      const auto quantile = centres.begin() + all.size() * k / slabs;
+      std::nth_element(centres.begin(), quantile, centres.end());
+      cuts[k] = *quantile;
+    }
     fit.pool_.for_each(slabs, [&](std::size_t k, int) {
       std::vector<face_descriptor> mine;
       for(std::size_t j = 0; j < all.size(); ++j)
@@ -136,12 +146,7 @@ typename Fit::Face_pairs intersecting_pairs_after(Fit& fit, const std::vector<st
         again.push_back(f);
       }
   if(2 * again.size() >= std::size_t(num_faces(fit.mesh_))) return intersecting_pairs(fit);
-  auto box = [&](face_descriptor f) {
-    const auto h = halfedge(f, fit.mesh_);
-    return Box(fit.point(source(h, fit.mesh_)).bbox() + fit.point(target(h, fit.mesh_)).bbox() +
-                   fit.point(target(next(h, fit.mesh_), fit.mesh_)).bbox(),
-               f);
-  };
+  const auto box = [&](face_descriptor f) { return Box(face_bbox(fit.mesh_, fit.points_, f), f); };
   std::vector<Box> moved_boxes;
   for(face_descriptor f : again) moved_boxes.push_back(box(f));
   // the faces whose boxes meet a moved face's, the mesh's faces cut in one
